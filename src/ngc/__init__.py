@@ -1,0 +1,29 @@
+"""ngc — a pure-Python RS274/NGC (LinuxCNC dialect) G-code interpreter.
+
+>>> from ngc.canon.jsonl import ListSink
+>>> sink = ListSink()
+>>> interpret("G0 X1\\nM2\\n", sink)
+>>> sink.ops[5][0]
+StraightTraverse(x=1.0, y=0.0, z=0.0, a=0.0, b=0.0, c=0.0)
+"""
+
+from __future__ import annotations
+
+from .canon.ops import Op, Sink
+from .errors import NgcError
+from .interp.interpreter import Interpreter
+
+__version__ = "0.1.0"
+
+
+def interpret(text: str, sink: Sink, *, file: str | None = None) -> None:
+    """Interpret a whole program given as text, sending canonical operations to ``sink``.
+
+    Raises :class:`NgcError` at the first error.
+    """
+    interp = Interpreter(sink)
+    interp.startup()
+    interp.run(text.splitlines(), file=file)
+
+
+__all__ = ["Interpreter", "NgcError", "Op", "Sink", "interpret"]

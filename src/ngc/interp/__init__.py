@@ -1,0 +1,1 @@
+"""Interpretation: resolving blocks against parameters, checking them, executing them in order."""

@@ -1,0 +1,1 @@
+"""Convert-phase handlers, one module per concern; each takes the interpreter and a resolved block."""

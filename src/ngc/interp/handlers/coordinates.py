@@ -1,0 +1,271 @@
+"""Coordinate systems and offsets: G54–G59.3, G10 L2/L20, G52, G92/G92.1/G92.2/G92.3, G28/G30
+and their .1 forms, and the program <-> machine conversions G53 needs (coordinates.adoc).
+
+The canon is told offsets and rotation (SET_G5X_OFFSET, SET_G92_OFFSET, SET_XY_ROTATION) and is
+given positions in program coordinates; the interpreter keeps the current point in program
+coordinates and recomputes it whenever an offset changes.  Offsets stored in parameters are in
+inches (rs274's user units); rotary axes are never converted.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from ...canon import ops
+from ...errors import NgcSemanticError
+from ...language.codes import AXIS_LETTERS
+from ..parameters import (
+    COORD_STRIDE,
+    G28_HOME,
+    G30_HOME,
+    G54_ORIGIN,
+    G92_APPLIED,
+    G92_OFFSET,
+)
+from ..state import AXES, LINEAR
+
+if TYPE_CHECKING:
+    from ..interpreter import Interpreter
+    from ..resolve import Resolved
+    from ..state import State
+
+Vec = list[float]
+
+
+# -- conversions ------------------------------------------------------------------------------------
+def to_machine(st: State, prog: Vec) -> Vec:
+    """Program coordinates -> machine coordinates (G92 offset, XY rotation, G5x origin)."""
+    p = [prog[i] + st.g92[i] for i in range(AXES)]
+    if st.rotation:
+        p[0], p[1] = rotate(p[0], p[1], st.rotation)
+    return [p[i] + st.g5x[i] for i in range(AXES)]
+
+
+def to_program(st: State, machine: Vec) -> Vec:
+    """Machine coordinates -> program coordinates."""
+    p = [machine[i] - st.g5x[i] for i in range(AXES)]
+    if st.rotation:
+        p[0], p[1] = rotate(p[0], p[1], -st.rotation)
+    return [p[i] - st.g92[i] for i in range(AXES)]
+
+
+def rotate(x: float, y: float, degrees: float) -> tuple[float, float]:
+    t = math.radians(degrees)
+    c, s = math.cos(t), math.sin(t)
+    return x * c - y * s, x * s + y * c
+
+
+def _to_user(st: State, axis: int, value: float) -> float:
+    """A length in program units as stored in a parameter (inches)."""
+    return value / st.units_factor if LINEAR[axis] else value
+
+
+def _from_user(st: State, axis: int, value: float) -> float:
+    return value * st.units_factor if LINEAR[axis] else value
+
+
+def _axis_words(r: Resolved) -> list[tuple[int, float]]:
+    w = r.w
+    return [(i, w[a]) for i, a in enumerate(AXIS_LETTERS) if a in w]
+
+
+# -- emitting ---------------------------------------------------------------------------------------
+def emit_g5x(it: Interpreter) -> None:
+    st = it.state
+    it.emit(ops.SetG5xOffset(st.coord_index, *st.g5x))
+
+
+def emit_g92(it: Interpreter) -> None:
+    it.emit(ops.SetG92Offset(*it.state.g92))
+
+
+def emit_rotation(it: Interpreter) -> None:
+    it.emit(ops.SetXYRotation(it.state.rotation))
+
+
+def _keep_machine_position(it: Interpreter) -> Vec:
+    return to_machine(it.state, it.state.pos)
+
+
+# -- coordinate system selection ----------------------------------------------------------------
+def load_system(it: Interpreter, index: int) -> None:
+    """Make G54+index-1 the active origin from its parameters."""
+    st = it.state
+    base = G54_ORIGIN + COORD_STRIDE * (index - 1)
+    numbered = it.params.numbered
+    st.coord_index = index
+    st.g5x = [_from_user(st, i, numbered[base + i]) for i in range(AXES)]
+    st.rotation = numbered[base + 9]
+
+
+def select_system(it: Interpreter, code: int) -> None:
+    """G54..G59.3."""
+    index = code // 10 - 53 if code < 591 else code - 584
+    st = it.state
+    if index == st.coord_index:
+        it.emit(ops.Comment("interpreter: continuing to use same coordinate system"))
+        return
+    machine = _keep_machine_position(it)
+    load_system(it, index)
+    it.params.numbered[5220] = float(index)
+    st.pos = to_program(st, machine)
+    emit_g5x(it)
+    emit_g92(it)
+    emit_rotation(it)
+
+
+# -- G10 ----------------------------------------------------------------------------------------
+def g10(it: Interpreter, r: Resolved) -> None:
+    l_word = r.w.get("l")
+    if l_word in (2.0, 20.0):
+        _g10_origin(it, r, int(l_word))
+    elif l_word in (1.0, 10.0, 11.0, 0.0):
+        raise NgcSemanticError("G10 L1/L10/L11 (tool table) is not supported yet")
+    else:
+        raise NgcSemanticError("Line with G10 does not have L0, L1, L10, L11, L2, or L20")
+
+
+def _g10_origin(it: Interpreter, r: Resolved, l_word: int) -> None:
+    """G10 L2 P: set an origin; G10 L20 P: set it so the current point has the given coordinates."""
+    st = it.state
+    p = r.w.get("p")
+    if p is None or p < 0 or p > 9 or p != int(p):
+        raise NgcSemanticError(f"P value out of range (0-9) with G10 L{l_word}")
+    index = int(p) or st.coord_index
+    base = G54_ORIGIN + COORD_STRIDE * (index - 1)
+    numbered = it.params.numbered
+    values = {i: v for i, v in _axis_words(r)}
+    if l_word == 20:
+        values = _l20_origin(it, values, index)
+    for i, v in values.items():
+        numbered[base + i] = _to_user(st, i, v)
+    if "r" in r.w:
+        numbered[base + 9] = r.w["r"]
+    if index != st.coord_index:
+        it.emit(ops.Comment("interpreter: setting coordinate system origin"))
+        return
+    machine = _keep_machine_position(it)
+    load_system(it, index)
+    st.pos = to_program(st, machine)
+    emit_g5x(it)
+    emit_rotation(it)
+
+
+def _l20_origin(it: Interpreter, values: dict[int, float], index: int) -> dict[int, float]:
+    """Origins that make the current machine position read ``values`` in system ``index``."""
+    st = it.state
+    machine = _keep_machine_position(it)
+    base = G54_ORIGIN + COORD_STRIDE * (index - 1)
+    numbered = it.params.numbered
+    rot = numbered[base + 9]
+    origin = [_from_user(st, i, numbered[base + i]) for i in range(AXES)]
+    out: dict[int, float] = {}
+    if rot and (0 in values or 1 in values):
+        # The given X/Y are rotated coordinates: origin = machine - rotate(value + g92).
+        cur = [machine[i] - origin[i] for i in range(2)]
+        ux, uy = rotate(cur[0], cur[1], -rot)
+        px = values.get(0, ux - st.g92[0]) + st.g92[0]
+        py = values.get(1, uy - st.g92[1]) + st.g92[1]
+        rx, ry = rotate(px, py, rot)
+        if 0 in values:
+            out[0] = machine[0] - rx
+        if 1 in values:
+            out[1] = machine[1] - ry
+    else:
+        for i in (0, 1):
+            if i in values:
+                out[i] = machine[i] - values[i] - st.g92[i]
+    for i in range(2, AXES):
+        if i in values:
+            out[i] = machine[i] - values[i] - st.g92[i]
+    return out
+
+
+# -- G92 / G52 ----------------------------------------------------------------------------------
+def _store_g92(it: Interpreter) -> None:
+    st = it.state
+    numbered = it.params.numbered
+    for i in range(AXES):
+        numbered[G92_OFFSET + i] = _to_user(st, i, st.g92[i])
+
+
+def g92(it: Interpreter, r: Resolved) -> None:
+    """G92: offsets so the current point has the given coordinates."""
+    words = _axis_words(r)
+    if not words:
+        raise NgcSemanticError("All axes missing with g52 or g92")
+    st = it.state
+    for i, v in words:
+        st.g92[i] = st.pos[i] + st.g92[i] - v
+        st.pos[i] = v
+    _applied(it, True)
+    _store_g92(it)
+    emit_g92(it)
+
+
+def g52(it: Interpreter, r: Resolved) -> None:
+    """G52: local offset given directly (shares G92's offset)."""
+    words = _axis_words(r)
+    if not words:
+        raise NgcSemanticError("All axes missing with g52 or g92")
+    st = it.state
+    for i, v in words:
+        st.pos[i] += st.g92[i] - v
+        st.g92[i] = v
+    _applied(it, True)
+    _store_g92(it)
+    emit_g92(it)
+
+
+def _applied(it: Interpreter, on: bool) -> None:
+    it.state.g92_applied = on
+    it.params.numbered[G92_APPLIED] = 1.0 if on else 0.0
+
+
+def g92_reset(it: Interpreter, code: int) -> None:
+    """G92.1 clear offsets and parameters, G92.2 clear offsets, G92.3 restore from parameters."""
+    st = it.state
+    numbered = it.params.numbered
+    if code == 923:
+        new = [_from_user(st, i, numbered[G92_OFFSET + i]) for i in range(AXES)]
+        _applied(it, True)
+    else:
+        new = [0.0] * AXES
+        _applied(it, False)
+        if code == 921:
+            for i in range(AXES):
+                numbered[G92_OFFSET + i] = 0.0
+    for i in range(AXES):
+        st.pos[i] += st.g92[i] - new[i]
+    st.g92 = new
+    emit_g92(it)
+
+
+# -- G28 / G30 ----------------------------------------------------------------------------------
+def home_store(it: Interpreter, code: int) -> None:
+    """G28.1 / G30.1: store the current machine position."""
+    st = it.state
+    base = G28_HOME if code == 281 else G30_HOME
+    machine = _keep_machine_position(it)
+    for i in range(AXES):
+        it.params.numbered[base + i] = _to_user(st, i, machine[i])
+
+
+def home_targets(it: Interpreter, code: int, r: Resolved) -> tuple[Vec | None, Vec]:
+    """G28 / G30: the optional intermediate point and the stored point, in program coordinates."""
+    st = it.state
+    base = G28_HOME if code == 280 else G30_HOME
+    numbered = it.params.numbered
+    words = _axis_words(r)
+    machine_home = [_from_user(st, i, numbered[base + i]) for i in range(AXES)]
+    if not words:
+        return None, to_program(st, machine_home)
+    middle = list(st.pos)
+    for i, v in words:
+        middle[i] = v if st.absolute else st.pos[i] + v
+    machine_mid = to_machine(st, middle)
+    target = list(machine_mid)
+    for i, _v in words:
+        target[i] = machine_home[i]
+    return middle, to_program(st, target)

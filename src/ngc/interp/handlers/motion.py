@@ -1,0 +1,206 @@
+"""Motion: G0, G1, G2, G3 (center and radius formats, full circles, P turns, helices, all planes),
+G53 machine-coordinate moves and inverse-time feed (g-code.adoc, G0–G3, G53, G93).
+
+Tolerances are LinuxCNC's, as rs274 shows them: a center-format arc may spiral if the end radius
+differs from the start radius by at most ``CENTER_ARC_TOLERANCE`` or by at most 0.1 %, and never
+by more than 100 times that absolute tolerance.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from ...canon import ops
+from ...errors import NgcSemanticError
+from . import coordinates
+
+if TYPE_CHECKING:
+    from ..interpreter import Interpreter
+    from ..resolve import Resolved
+
+CENTER_ARC_TOLERANCE_INCH = 2 * 0.001 * math.sqrt(2.0)
+CENTER_ARC_TOLERANCE_MM = 2 * 0.01 * math.sqrt(2.0)
+CENTER_ARC_RELATIVE_TOLERANCE = 0.001
+RADIUS_TOLERANCE_INCH = 0.00005
+RADIUS_TOLERANCE_MM = RADIUS_TOLERANCE_INCH * 25.4
+ZERO_RADIUS = 1e-12
+
+# plane code -> (first axis, second axis, helix axis, center letters, forbidden letter, names)
+PLANES: dict[int, tuple[int, int, int, str, str, str, str]] = {
+    170: (0, 1, 2, "ij", "k", "xy", "XY"),
+    180: (2, 0, 1, "ki", "j", "xz", "ZX"),
+    190: (1, 2, 0, "jk", "i", "yz", "YZ"),
+}
+
+
+def end_point(it: Interpreter, r: Resolved, machine: bool) -> list[float]:
+    """The block's target in program coordinates (G53: axis words are machine coordinates)."""
+    st = it.state
+    w = r.w
+    pos = st.pos
+    if machine:
+        current = coordinates.to_machine(st, pos)
+        target = [w.get(a, current[i]) for i, a in enumerate("xyzabc")]
+        return coordinates.to_program(st, target)
+    if st.absolute:
+        return [w.get("x", pos[0]), w.get("y", pos[1]), w.get("z", pos[2]),
+                w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
+    return [pos[0] + w.get("x", 0.0), pos[1] + w.get("y", 0.0), pos[2] + w.get("z", 0.0),
+            pos[3] + w.get("a", 0.0), pos[4] + w.get("b", 0.0), pos[5] + w.get("c", 0.0)]
+
+
+def traverse(it: Interpreter, end: list[float]) -> None:
+    it.emit(ops.StraightTraverse(*end))
+    it.state.pos = end
+
+
+def feed(it: Interpreter, r: Resolved, end: list[float]) -> None:
+    """G1."""
+    st = it.state
+    _check_feed(it, r, "g1")
+    if st.feed_mode == 930:
+        it.emit(ops.SetFeedRate(_inverse_rate(st.feed, _line_length(st.pos, end))))
+    it.emit(ops.StraightFeed(*end))
+    st.pos = end
+
+
+def _check_feed(it: Interpreter, r: Resolved, name: str) -> None:
+    st = it.state
+    if st.feed_mode == 930:
+        if "f" not in r.w:
+            raise NgcSemanticError(f"F word missing with inverse time {name} move")
+    elif st.feed_mode == 950:
+        if st.speed == 0.0:
+            raise NgcSemanticError("Cannot feed with zero spindle speed in feed per rev mode")
+        if st.feed == 0.0:
+            raise NgcSemanticError(f"Cannot do {name} with zero feed rate")
+    elif st.feed == 0.0:
+        raise NgcSemanticError(f"Cannot do {name} with zero feed rate")
+
+
+def _line_length(a: list[float], b: list[float]) -> float:
+    d = math.sqrt((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2 + (b[2] - a[2]) ** 2)
+    if d == 0.0:
+        d = math.sqrt((b[3] - a[3]) ** 2 + (b[4] - a[4]) ** 2 + (b[5] - a[5]) ** 2)
+    return d
+
+
+def _inverse_rate(f: float, length: float) -> float:
+    """G93: the move takes 1/F minutes, so the rate is length * F."""
+    return length * f if length > 0.0 else f * 0.1
+
+
+# -- arcs ---------------------------------------------------------------------------------------
+def arc(it: Interpreter, r: Resolved, end: list[float], code: int) -> None:
+    """G2 (clockwise) / G3 (counterclockwise) in the active plane."""
+    st = it.state
+    w = r.w
+    plane = PLANES.get(st.plane)
+    if plane is None:
+        raise NgcSemanticError("Arcs are not supported in the G17.1/G18.1/G19.1 planes")
+    first, second, helix, letters, forbidden, pname, labels = plane
+    if forbidden in w:
+        raise NgcSemanticError(f"{forbidden.upper()} word given for arc in {pname} plane")
+    has_ij = letters[0] in w or letters[1] in w
+    if "r" not in w and not has_ij:
+        raise NgcSemanticError("R i j k words all missing for arc")
+    if "r" in w and has_ij:
+        raise NgcSemanticError("Mixed radius ijk format for arc")
+    _check_feed(it, r, f"g{code // 10}")
+    turns = _turns(w.get("p"))
+    start = st.pos
+    s1, s2 = start[first], start[second]
+    e1, e2 = end[first], end[second]
+    if "r" in w:
+        c1, c2 = _radius_center(it, code, w["r"], s1, s2, e1, e2)
+    else:
+        c1, c2 = _ijk_center(it, w, letters, s1, s2, e1, e2, labels)
+    rotation = turns if code == 30 else -turns
+    if st.feed_mode == 930:
+        length = _arc_length(s1, s2, e1, e2, c1, c2, rotation, end[helix] - start[helix])
+        it.emit(ops.SetFeedRate(_inverse_rate(st.feed, length)))
+    it.emit(ops.ArcFeed(e1, e2, c1, c2, rotation, end[helix], end[3], end[4], end[5]))
+    st.pos = end
+
+
+def _turns(p: float | None) -> int:
+    if p is None:
+        return 1
+    if p != math.floor(p):
+        raise NgcSemanticError("P value not an integer with M19 G2 or G3")
+    if p < 1:
+        raise NgcSemanticError("P value should be 1 or greater with G2 or G3")
+    return int(p)
+
+
+def _ijk_center(
+    it: Interpreter, w: dict[str, float], letters: str,
+    s1: float, s2: float, e1: float, e2: float, labels: str,
+) -> tuple[float, float]:
+    o1 = w.get(letters[0], 0.0)
+    o2 = w.get(letters[1], 0.0)
+    if it.state.arc_absolute:
+        c1, c2 = o1, o2
+    else:
+        c1, c2 = s1 + o1, s2 + o2
+    r1 = math.hypot(s1 - c1, s2 - c2)
+    r2 = math.hypot(e1 - c1, e2 - c2)
+    a, b = labels[0], labels[1]
+    where = (
+        f"start=({a}{s1:.4f},{b}{s2:.4f}) center=({a}{c1:.4f},{b}{c2:.4f}) "
+        f"end=({a}{e1:.4f},{b}{e2:.4f}) r1={r1:.4f} r2={r2:.4f}"
+    )
+    if r1 < ZERO_RADIUS or r2 < ZERO_RADIUS:
+        raise NgcSemanticError(f"Zero-radius arc: {where}")
+    abs_err = abs(r1 - r2)
+    rel_err = abs_err / max(r1, r2)
+    tol = CENTER_ARC_TOLERANCE_MM if it.state.metric else CENTER_ARC_TOLERANCE_INCH
+    if abs_err > 100 * tol or (abs_err > tol and rel_err > CENTER_ARC_RELATIVE_TOLERANCE):
+        raise NgcSemanticError(
+            "Radius to end of arc differs from radius to start: "
+            f"{where} abs_err={abs_err:.4g} rel_err={rel_err * 100:.4f}%"
+        )
+    return c1, c2
+
+
+def _radius_center(
+    it: Interpreter, code: int, radius: float, s1: float, s2: float, e1: float, e2: float
+) -> tuple[float, float]:
+    if s1 == e1 and s2 == e2:
+        raise NgcSemanticError("Current point same as end point of arc")
+    tol = RADIUS_TOLERANCE_MM if it.state.metric else RADIUS_TOLERANCE_INCH
+    abs_r = abs(radius)
+    half = math.hypot(e1 - s1, e2 - s2) / 2.0
+    if abs_r < half - tol:
+        raise NgcSemanticError("Arc radius too small to reach end point")
+    abs_r = max(abs_r, half)
+    theta = math.atan2(e2 - s2, e1 - s1)
+    # For G2 the center lies right of the chord (left for G3); a negative R takes the far side.
+    side = -1.0 if code == 20 else 1.0
+    if radius < 0:
+        side = -side
+    offset = math.sqrt(max(abs_r * abs_r - half * half, 0.0))
+    m1 = (s1 + e1) / 2.0
+    m2 = (s2 + e2) / 2.0
+    angle = theta + side * math.pi / 2.0
+    return m1 + offset * math.cos(angle), m2 + offset * math.sin(angle)
+
+
+def _arc_length(
+    s1: float, s2: float, e1: float, e2: float, c1: float, c2: float, rotation: int, dz: float
+) -> float:
+    radius = math.hypot(s1 - c1, s2 - c2)
+    a0 = math.atan2(s2 - c2, s1 - c1)
+    a1 = math.atan2(e2 - c2, e1 - c1)
+    if rotation > 0:
+        sweep = a1 - a0
+        if sweep <= 0.0:
+            sweep += 2 * math.pi
+        sweep += 2 * math.pi * (rotation - 1)
+    else:
+        sweep = a0 - a1
+        if sweep <= 0.0:
+            sweep += 2 * math.pi
+        sweep += 2 * math.pi * (-rotation - 1)
+    return math.hypot(radius * sweep, dz)

@@ -1,0 +1,202 @@
+"""The interpreter: runs blocks through resolve -> check -> convert, in LinuxCNC's order.
+
+``Interpreter.execute`` takes one parsed :class:`~ngc.language.parser.Block`;
+``Interpreter.run`` streams a whole program (``%`` delimiters, program end, end-of-file rules).
+Canonical operations go to the sink the interpreter is given.  All state lives on the instance.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
+
+from ..canon import ops
+from ..errors import NgcError, NgcProgramError, NgcSemanticError
+from ..language import codes
+from ..language.parser import Block, parse_line
+from .check import check
+from .handlers import coordinates, modes, motion, program
+from .parameters import Parameters
+from .resolve import Resolved, resolve
+from .state import State
+
+if TYPE_CHECKING:
+    from ..canon.ops import Op, Sink
+
+
+class Interpreter:
+    """One RS274/NGC interpreter: state, parameters and a sink for its canonical operations."""
+
+    def __init__(self, sink: Sink, *, block_delete: bool = False) -> None:
+        self.sink = sink
+        self.state = State()
+        self.state.blocks_deleted = block_delete
+        self.params = Parameters(self.state)
+        self.params.numbered[5220] = 1.0
+        self.label = "N..... "
+        self.line = 0
+        self.ended = False
+        self.file: str | None = None
+
+    def emit(self, op: Op) -> None:
+        self.sink.emit(op, self.label, self.line)
+
+    # -- program ------------------------------------------------------------------------------
+    def startup(self) -> None:
+        """The canonical calls of interpreter initialisation (rs274 prints them first)."""
+        st = self.state
+        self.emit(ops.UseLengthUnits("CANON_UNITS_MM"))
+        self.emit(ops.SetG5xOffset(st.coord_index, *st.g5x))
+        self.emit(ops.SetG92Offset(*st.g92))
+        self.emit(ops.SetXYRotation(st.rotation))
+        self.emit(ops.SetFeedReference("CANON_XYZ"))
+
+    def run(self, lines: Iterable[str], file: str | None = None) -> None:
+        """Execute a program line by line until M2/M30, the closing ``%`` or an error.
+
+        Raises :class:`NgcError` (with file and line) on the first error.
+        """
+        self.file = file
+        self.ended = False
+        percent = False
+        started = False
+        last_no, last_text = 0, ""
+        for number, raw in enumerate(lines, 1):
+            raw = raw.rstrip("\r\n")
+            last_no, last_text = number, raw
+            if not started:
+                if not raw.strip():
+                    continue
+                started = True
+                if raw.strip() == "%":
+                    percent = True
+                    continue
+            elif percent and raw.strip() == "%":
+                self.label = "N..... "
+                self.emit(ops.Finish())
+                return
+            self.execute_line(raw, number)
+            if self.ended:
+                return
+        message = "File ended with no percent sign" if percent else (
+            "File ended with no percent sign or program end"
+        )
+        raise NgcProgramError(message, file=file, line=last_no, source=last_text.rstrip())
+
+    def execute_line(self, raw: str, number: int) -> None:
+        try:
+            block = parse_line(raw, number)
+        except NgcError as err:
+            raise err.locate(file=self.file, line=number, source=raw.rstrip()) from None
+        self.execute(block)
+
+    def execute(self, block: Block) -> None:
+        """Resolve, check and convert one block."""
+        if block.delete and self.state.blocks_deleted:
+            return
+        self.label = block.label
+        self.line = self.state.line = block.line
+        try:
+            r = resolve(block, self.params)
+            assign = self.params.assign
+            for target, value in r.assigns:
+                assign(target, value)
+            check(self.state, r)
+            self.convert(r)
+        except NgcError as err:
+            raise err.locate(file=self.file, line=block.line, source=block.source) from None
+
+    # -- convert ------------------------------------------------------------------------------
+    def convert(self, r: Resolved) -> None:
+        """Execute a checked block in the order of overview.adoc, "G-code Order of Execution"."""
+        if r.comment is not None:
+            program.comment(self, r.comment)
+        g = r.g
+        m = r.m
+        w = r.w
+        if codes.G_FEED_MODE in g:
+            modes.feed_mode(self, g[codes.G_FEED_MODE])
+        if "f" in w:
+            modes.feed_rate(self, w["f"])
+        if "s" in w:
+            modes.spindle_speed(self, w["s"])
+        if m:
+            self.convert_m_before_motion(m, w)
+        if len(g) > 1 or codes.G_MOTION not in g:
+            self.convert_modes(g, r)
+        self.convert_motion(g, r)
+        if codes.M_STOP in m:
+            program.stop(self, m[codes.M_STOP])
+
+    def convert_m_before_motion(self, m: dict[int, int], w: dict[str, float]) -> None:
+        for group in (codes.M_IO, codes.M_TOOL, codes.M_STATE, codes.M_USER):
+            if group in m:
+                raise NgcSemanticError(f"M{m[group]} is not supported yet")
+        if codes.M_SPINDLE in m:
+            modes.spindle(self, m[codes.M_SPINDLE])
+        if codes.M_COOLANT in m:
+            modes.coolant(self, m[codes.M_COOLANT])
+        if codes.M_OVERRIDE in m:
+            modes.overrides(self, m[codes.M_OVERRIDE], w.get("p"))
+
+    def convert_modes(self, g: dict[int, int], r: Resolved) -> None:
+        if g.get(codes.G_NON_MODAL) == 40:
+            modes.dwell(self, r)
+        if codes.G_PLANE in g:
+            modes.plane(self, g[codes.G_PLANE])
+        if codes.G_UNITS in g:
+            modes.units(self, g[codes.G_UNITS])
+        for group in (codes.G_LATHE, codes.G_CUTTER_COMP, codes.G_TOOL_LENGTH):
+            code = g.get(group)
+            if code is not None and not codes.G_CODES[code].implemented:
+                raise NgcSemanticError(f"{codes.g_name(code)} is not supported yet")
+        if codes.G_COORD_SYSTEM in g:
+            coordinates.select_system(self, g[codes.G_COORD_SYSTEM])
+        if codes.G_CONTROL in g:
+            modes.control_mode(self, g[codes.G_CONTROL], r)
+        if codes.G_DISTANCE in g:
+            modes.distance_mode(self, g[codes.G_DISTANCE])
+        if codes.G_ARC_DISTANCE in g:
+            self.state.arc_absolute = g[codes.G_ARC_DISTANCE] == 901
+        if codes.G_RETRACT in g:
+            self.state.retract_r = g[codes.G_RETRACT] == 980
+        code = g.get(codes.G_NON_MODAL)
+        if code is not None and code != 40:
+            self.convert_non_modal(code, r)
+
+    def convert_non_modal(self, code: int, r: Resolved) -> None:
+        if code == 100:
+            coordinates.g10(self, r)
+        elif code == 920:
+            coordinates.g92(self, r)
+        elif code == 520:
+            coordinates.g52(self, r)
+        elif code in (921, 922, 923):
+            coordinates.g92_reset(self, code)
+        elif code in (281, 301):
+            coordinates.home_store(self, code)
+        elif code in (280, 300):
+            middle, home = coordinates.home_targets(self, code, r)
+            if middle is not None:
+                motion.traverse(self, middle)
+            motion.traverse(self, home)
+
+    def convert_motion(self, g: dict[int, int], r: Resolved) -> None:
+        st = self.state
+        code = g.get(codes.G_MOTION)
+        if code is None:
+            if st.motion == 800 or not r.has_axes or g.get(codes.G_NON_MODAL) in codes.G_AXIS_USERS_NON_MODAL:
+                return
+            code = st.motion
+        elif not codes.G_CODES[code].implemented:
+            raise NgcSemanticError(f"{codes.g_name(code)} is not supported yet")
+        st.motion = code
+        if code == 800:
+            return
+        end = motion.end_point(self, r, g.get(codes.G_NON_MODAL) == 530)
+        if code == 0:
+            motion.traverse(self, end)
+        elif code == 10:
+            motion.feed(self, r, end)
+        else:
+            motion.arc(self, r, end, code)

@@ -1,0 +1,147 @@
+"""Numbered, named and predefined parameters (overview.adoc, "Parameters").
+
+Numbered parameters live in one array; lengths stored by the interpreter in system parameters
+(offsets, G28/G30 positions) are in inches, rs274's user units, whatever the program units.
+Named parameters are local (``#<name>``, per call frame) or global (``#<_name>``).  The predefined
+read-only names (``#<_x>``, ``#<_metric>``, ...) and the position parameters 5420–5428 are computed
+from the interpreter state when read.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from ..errors import NgcRuntimeError
+from ..language.parser import MAX_PARAMETER
+from .state import AXES, State
+
+# System parameter numbers (overview.adoc, "Numbered Parameters").
+G28_HOME = 5161
+G30_HOME = 5181
+G92_APPLIED = 5210
+G92_OFFSET = 5211
+COORD_SYSTEM = 5220
+G54_ORIGIN = 5221  # G54 X; each system takes 20 numbers, rotation at +9
+COORD_STRIDE = 20
+CURRENT_POSITION = 5420
+
+Getter = Callable[[State], float]
+
+
+def _flag(attr: str, value: object) -> Getter:
+    return lambda s: 1.0 if getattr(s, attr) == value else 0.0
+
+
+def _pos(axis: int) -> Getter:
+    return lambda s: s.pos[axis]
+
+
+# Predefined read-only named parameters (overview.adoc, "Predefined Named Parameters").
+PREDEFINED: dict[str, Getter] = {
+    "_vmajor": lambda s: 2.9,
+    "_vminor": lambda s: 0.0,
+    "_line": lambda s: float(s.line),
+    "_motion_mode": lambda s: float(s.motion),
+    "_plane": lambda s: float(s.plane),
+    "_ccomp": lambda s: float(s.ccomp),
+    "_metric": _flag("metric", True),
+    "_imperial": _flag("metric", False),
+    "_absolute": _flag("absolute", True),
+    "_incremental": _flag("absolute", False),
+    "_inverse_time": _flag("feed_mode", 930),
+    "_units_per_minute": _flag("feed_mode", 940),
+    "_units_per_rev": _flag("feed_mode", 950),
+    "_coord_system": lambda s: float(530 + 10 * s.coord_index if s.coord_index <= 6 else 584 + s.coord_index),
+    "_tool_offset": _flag("tool_offset", True),
+    "_retract_r_plane": _flag("retract_r", True),
+    "_retract_old_z": _flag("retract_r", False),
+    "_spindle_rpm_mode": lambda s: 1.0,
+    "_spindle_css_mode": lambda s: 0.0,
+    "_ijk_absolute_mode": _flag("arc_absolute", True),
+    "_lathe_diameter_mode": _flag("lathe_diameter", True),
+    "_lathe_radius_mode": _flag("lathe_diameter", False),
+    "_spindle_on": lambda s: 1.0 if s.spindle != 0 else 0.0,
+    "_spindle_cw": lambda s: 1.0 if s.spindle == 1 else 0.0,
+    "_mist": _flag("mist", True),
+    "_flood": _flag("flood", True),
+    "_speed_override": _flag("speed_override", True),
+    "_feed_override": _flag("feed_override", True),
+    "_adaptive_feed": _flag("adaptive_feed", True),
+    "_feed_hold": _flag("feed_hold", True),
+    "_feed": lambda s: s.feed,
+    "_rpm": lambda s: s.speed,
+    "_x": _pos(0),
+    "_y": _pos(1),
+    "_z": _pos(2),
+    "_a": _pos(3),
+    "_b": _pos(4),
+    "_c": _pos(5),
+    "_u": lambda s: 0.0,
+    "_v": lambda s: 0.0,
+    "_w": lambda s: 0.0,
+    "_current_tool": lambda s: 0.0,
+    "_current_pocket": lambda s: 0.0,
+    "_selected_tool": lambda s: -1.0,
+    "_selected_pocket": lambda s: -1.0,
+    "_value": lambda s: 0.0,
+    "_value_returned": lambda s: 0.0,
+    "_task": lambda s: 0.0,
+    "_call_level": lambda s: 0.0,
+    "_remap_level": lambda s: 0.0,
+}
+
+
+class Parameters:
+    """All parameters of one interpreter; the expression context (``num``/``named``/``exists``)."""
+
+    __slots__ = ("globals", "locals", "numbered", "state")
+
+    def __init__(self, state: State) -> None:
+        self.state = state
+        self.numbered = [0.0] * (MAX_PARAMETER + 1)
+        self.globals: dict[str, float] = {}
+        self.locals: list[dict[str, float]] = [{}]
+
+    # -- reading (expression context) ---------------------------------------------------------
+    def num(self, index: int) -> float:
+        if CURRENT_POSITION <= index < CURRENT_POSITION + 9:
+            axis = index - CURRENT_POSITION
+            return self.state.pos[axis] if axis < AXES else 0.0
+        return self.numbered[index]
+
+    def named(self, name: str) -> float:
+        if name.startswith("_"):
+            getter = PREDEFINED.get(name)
+            if getter is not None:
+                return getter(self.state)
+            value = self.globals.get(name)
+        else:
+            value = self.locals[-1].get(name)
+        if value is None:
+            raise NgcRuntimeError(f"Named parameter #<{name}> not defined")
+        return value
+
+    def exists(self, name: str) -> bool:
+        if name.startswith("_"):
+            return name in PREDEFINED or name in self.globals
+        return name in self.locals[-1]
+
+    def index(self, value: float) -> int:
+        return int(value)
+
+    # -- writing ------------------------------------------------------------------------------
+    def assign(self, target: int | str, value: float) -> None:
+        """Set a numbered or named parameter (the queued settings of a block)."""
+        if isinstance(target, int):
+            self.numbered[target] = value
+        elif target.startswith("_"):
+            self.globals[target] = value
+        else:
+            self.locals[-1][target] = value
+
+
+
+def check_writable(name: str) -> None:
+    """Predefined named parameters are read-only."""
+    if name in PREDEFINED:
+        raise NgcRuntimeError(f"Cannot assign to read-only parameter #<{name}>")

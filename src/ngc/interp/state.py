@@ -1,0 +1,86 @@
+"""The interpreter's modal state and machine position.
+
+Lengths are in the current program units (G20 inch / G21 mm), as rs274's canon speaks; the position
+is in program coordinates (the active G5x and G92 offsets removed, rotation undone).  Each modal field
+names the codes that set it.  Codes are integers, the G number times ten.
+"""
+
+from __future__ import annotations
+
+AXES = 6  # X Y Z A B C: the standalone machine's axes
+LINEAR = (True, True, True, False, False, False)
+MM_PER_INCH = 25.4
+
+
+class State:
+    """Everything a block can read or change, except parameters."""
+
+    __slots__ = (
+        "absolute",
+        "adaptive_feed",
+        "arc_absolute",
+        "blocks_deleted",
+        "ccomp",
+        "control_mode",
+        "coord_index",
+        "feed",
+        "feed_hold",
+        "feed_mode",
+        "feed_override",
+        "flood",
+        "g5x",
+        "g92",
+        "g92_applied",
+        "line",
+        "lathe_diameter",
+        "metric",
+        "mist",
+        "motion",
+        "naive_tolerance",
+        "path_tolerance",
+        "plane",
+        "pos",
+        "retract_r",
+        "rotation",
+        "speed",
+        "speed_override",
+        "spindle",
+        "tool_offset",
+    )
+
+    def __init__(self) -> None:
+        self.pos = [0.0] * AXES  # current point, program coordinates
+        self.g5x = [0.0] * AXES  # active G54..G59.3 origin (program units)
+        self.g92 = [0.0] * AXES  # G52 / G92 axis offset (program units)
+        self.g92_applied = False  # G92 set (#5210); G92.1 / G92.2 clear it, G92.3 restores
+        self.rotation = 0.0  # degrees, G10 L2 R of the active system
+        self.coord_index = 1  # G54=1 ... G59.3=9
+        self.metric = True  # G21 True, G20 False
+        self.plane = 170  # G17 170, G18 180, G19 190, G17.1 171, G18.1 181, G19.1 191
+        self.absolute = True  # G90 True, G91 False
+        self.arc_absolute = False  # G90.1 True, G91.1 False
+        self.feed_mode = 940  # G93 930, G94 940, G95 950
+        self.motion = 800  # G0 0, G1 10, G2 20, G3 30, G80 800
+        self.control_mode = 610  # G61 610, G61.1 611, G64 640
+        self.path_tolerance = 0.0  # G64 P
+        self.naive_tolerance = 0.0  # G64 Q
+        self.retract_r = True  # G98 True, G99 False
+        self.ccomp = 400  # G40 400
+        self.tool_offset = False  # G43 on
+        self.lathe_diameter = False  # G7
+        self.feed = 0.0  # F
+        self.speed = 0.0  # S
+        self.spindle = 0  # M3 1, M4 -1, M5 0
+        self.mist = False  # M7 / M9
+        self.flood = False  # M8 / M9
+        self.feed_override = True  # M48 / M49 / M50
+        self.speed_override = True  # M48 / M49 / M51
+        self.adaptive_feed = False  # M52
+        self.feed_hold = True  # M53
+        self.line = 0  # source line being executed (#<_line>)
+        self.blocks_deleted = False  # block delete switch (rs274 -b)
+
+    @property
+    def units_factor(self) -> float:
+        """Program units per inch (parameters keep lengths in inches, rs274's user units)."""
+        return MM_PER_INCH if self.metric else 1.0

@@ -1,0 +1,1 @@
+"""The RS274/NGC language: reading lines into blocks (lexing, parsing, expressions, the code table)."""

@@ -1,0 +1,234 @@
+"""Expression values: constants and compiled closures, LinuxCNC's operators and functions.
+
+A value read from a line is either a ``float`` (a constant, folded at read time) or an ``Expr``: a
+closure taking the parameter context and returning a float.  Closures are built once when the line is
+parsed and run each time the block executes.  Semantics follow overview.adoc "Expressions",
+"Binary Operators" and "Functions", as rs274 evaluates them: angles in degrees, all operators
+left-associative within their precedence group, comparisons equal within ``TOLERANCE_EQUAL``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Protocol
+
+from ..errors import NgcRuntimeError
+
+
+class ParamContext(Protocol):
+    """What an expression reads: parameters by number or name."""
+
+    def num(self, index: int) -> float: ...
+
+    def named(self, name: str) -> float: ...
+
+    def exists(self, name: str) -> bool: ...
+
+    def index(self, value: float) -> int: ...
+
+
+Expr = Callable[[ParamContext], float]
+Value = float | Expr
+
+# rs274 treats two values as equal when they differ by less than this (EQ, NE, and friends).
+TOLERANCE_EQUAL = 0.0001
+
+# Precedence groups (overview.adoc, "Operators Precedence"); higher binds tighter.
+PRECEDENCE: dict[str, int] = {
+    "**": 4,
+    "*": 3,
+    "/": 3,
+    "mod": 3,
+    "+": 2,
+    "-": 2,
+    "eq": 1,
+    "ne": 1,
+    "gt": 1,
+    "ge": 1,
+    "lt": 1,
+    "le": 1,
+    "and": 0,
+    "or": 0,
+    "xor": 0,
+}
+
+
+def _div(a: float, b: float) -> float:
+    if b == 0.0:
+        raise NgcRuntimeError("Attempt to divide by zero")
+    return a / b
+
+
+def _mod(a: float, b: float) -> float:
+    if b == 0.0:
+        raise NgcRuntimeError("Attempt to divide by zero")
+    r = math.fmod(a, b)
+    if r < 0.0:
+        r += abs(b)
+    return r
+
+
+def _pow(a: float, b: float) -> float:
+    if a < 0.0 and b != math.floor(b):
+        raise NgcRuntimeError("Attempt to raise negative to non integer power")
+    try:
+        return float(a**b)
+    except ZeroDivisionError:
+        raise NgcRuntimeError("Attempt to divide by zero") from None
+    except OverflowError:
+        return math.inf
+
+
+def _bool(x: bool) -> float:
+    return 1.0 if x else 0.0
+
+
+BINARY: dict[str, Callable[[float, float], float]] = {
+    "**": _pow,
+    "*": lambda a, b: a * b,
+    "/": _div,
+    "mod": _mod,
+    "+": lambda a, b: a + b,
+    "-": lambda a, b: a - b,
+    "eq": lambda a, b: _bool(abs(a - b) < TOLERANCE_EQUAL),
+    "ne": lambda a, b: _bool(abs(a - b) >= TOLERANCE_EQUAL),
+    "gt": lambda a, b: _bool(a > b),
+    "ge": lambda a, b: _bool(a >= b),
+    "lt": lambda a, b: _bool(a < b),
+    "le": lambda a, b: _bool(a <= b),
+    "and": lambda a, b: _bool(a != 0.0 and b != 0.0),
+    "or": lambda a, b: _bool(a != 0.0 or b != 0.0),
+    "xor": lambda a, b: _bool((a != 0.0) != (b != 0.0)),
+}
+
+
+def _acos(x: float) -> float:
+    if x < -1.0 or x > 1.0:
+        raise NgcRuntimeError("Argument to acos out of range")
+    return math.degrees(math.acos(x))
+
+
+def _asin(x: float) -> float:
+    if x < -1.0 or x > 1.0:
+        raise NgcRuntimeError("Argument to asin out of range")
+    return math.degrees(math.asin(x))
+
+
+def _ln(x: float) -> float:
+    if x <= 0.0:
+        raise NgcRuntimeError("Zero or negative argument to ln")
+    return math.log(x)
+
+
+def _sqrt(x: float) -> float:
+    if x < 0.0:
+        raise NgcRuntimeError("Negative argument to sqrt")
+    return math.sqrt(x)
+
+
+def _exp(x: float) -> float:
+    try:
+        return math.exp(x)
+    except OverflowError:
+        return math.inf
+
+
+def _round(x: float) -> float:
+    # C round(): halves away from zero.
+    return float(math.floor(abs(x) + 0.5)) * (1.0 if x >= 0 else -1.0)
+
+
+UNARY: dict[str, Callable[[float], float]] = {
+    "abs": abs,
+    "acos": _acos,
+    "asin": _asin,
+    "cos": lambda x: math.cos(math.radians(x)),
+    "exp": _exp,
+    "fix": lambda x: float(math.floor(x)),
+    "fup": lambda x: float(math.ceil(x)),
+    "round": _round,
+    "ln": _ln,
+    "sin": lambda x: math.sin(math.radians(x)),
+    "sqrt": _sqrt,
+    "tan": lambda x: math.tan(math.radians(x)),
+}
+
+
+def atan2_degrees(y: float, x: float) -> float:
+    """ATAN[y]/[x]: four-quadrant inverse tangent in degrees."""
+    return math.degrees(math.atan2(y, x))
+
+
+def as_expr(value: Value) -> Expr:
+    """Wrap a constant as a closure (operands of a non-constant expression)."""
+    if isinstance(value, float):
+        v = value
+        return lambda _p: v
+    return value
+
+
+def fold_binary(op: str, left: Value, right: Value) -> Value:
+    """Combine two operands; constant operands are folded now unless folding raises."""
+    return fold_binary_fn(BINARY[op], left, right)
+
+
+def fold_binary_fn(fn: Callable[[float, float], float], left: Value, right: Value) -> Value:
+    """Combine two operands with ``fn``, folding constants unless that raises."""
+    if isinstance(left, float) and isinstance(right, float):
+        try:
+            return fn(left, right)
+        except NgcRuntimeError:
+            pass
+    a = as_expr(left)
+    b = as_expr(right)
+    return lambda p: fn(a(p), b(p))
+
+
+def fold_unary(fn: Callable[[float], float], arg: Value) -> Value:
+    """Apply a function; a constant argument is folded now unless folding raises."""
+    if isinstance(arg, float):
+        try:
+            return fn(arg)
+        except NgcRuntimeError:
+            pass
+    a = as_expr(arg)
+    return lambda p: fn(a(p))
+
+
+def _reduce(values: list[float], ops: list[str]) -> float:
+    """Apply operators by precedence, left to right within a group, to already-read operands."""
+    for level in (4, 3, 2, 1, 0):
+        i = 0
+        while i < len(ops):
+            if PRECEDENCE[ops[i]] == level:
+                values[i : i + 2] = [BINARY[ops[i]](values[i], values[i + 1])]
+                del ops[i]
+            else:
+                i += 1
+    return values[0]
+
+
+def combine(operands: list[Value], operators: list[str]) -> Value:
+    """``v0 op1 v1 op2 v2 ...`` as one value.
+
+    rs274 reads (and so evaluates) every operand before it applies any operator, so an error in a
+    later operand wins over a division by zero in an earlier operation; the closure keeps that order.
+    """
+    if len(operators) == 1:
+        return fold_binary(operators[0], operands[0], operands[1])
+    if all(isinstance(v, float) for v in operands):
+        try:
+            return _reduce([float(v) for v in operands], list(operators))  # type: ignore[arg-type]
+        except NgcRuntimeError:
+            pass
+    fns = [as_expr(v) for v in operands]
+    ops = tuple(operators)
+    return lambda p: _reduce([f(p) for f in fns], list(ops))
+
+
+def evaluate(value: Value, params: ParamContext) -> float:
+    """The number a value stands for now."""
+    if isinstance(value, float):
+        return value
+    return value(params)

@@ -1,0 +1,39 @@
+"""Line normalization: what LinuxCNC does to a line before reading its items.
+
+Outside comments, spaces and tabs are dropped and letters are lower-cased; a ``;`` ends the line.
+A ``( ... )`` comment is kept verbatim (case and spaces) and may not contain another ``(``.
+(overview.adoc, "Format of a line" and "Comments".)
+"""
+
+from __future__ import annotations
+
+from ..errors import NgcSyntaxError
+
+_WHITESPACE_TABLE = str.maketrans("", "", " \t\r\n")
+
+
+def normalize(raw: str) -> str:
+    """Return ``raw`` with white space removed and letters lower-cased outside comments."""
+    if "(" not in raw and ";" not in raw:
+        return raw.translate(_WHITESPACE_TABLE).lower()
+    out: list[str] = []
+    i = 0
+    n = len(raw)
+    while i < n:
+        c = raw[i]
+        if c == "(":
+            close = raw.find(")", i + 1)
+            if close < 0:
+                raise NgcSyntaxError("Unclosed comment found", column=i + 1)
+            nested = raw.find("(", i + 1, close)
+            if nested >= 0:
+                raise NgcSyntaxError("Nested comment found", column=nested + 1)
+            out.append(raw[i : close + 1])
+            i = close + 1
+            continue
+        if c == ";":
+            break
+        if c not in " \t\r\n":
+            out.append(c.lower())
+        i += 1
+    return "".join(out)

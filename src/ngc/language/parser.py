@@ -1,0 +1,323 @@
+"""Reading one line of RS274/NGC into a :class:`Block`, once.
+
+A block keeps its items in source order — words, parameter settings, comments — with values that are
+constants or compiled expressions (see :mod:`.expressions`).  Nothing here depends on the
+interpreter's state, so a parsed block can be executed any number of times.  The grammar and the
+messages are rs274's: overview.adoc "Format of a line", "Numbers", "Parameters", "Expressions".
+"""
+
+from __future__ import annotations
+
+import re
+
+from ..errors import NgcError, NgcSyntaxError
+from . import expressions as ex
+from .lexer import normalize
+
+WORD = 0
+PARAM = 1
+COMMENT = 2
+
+Item = tuple[int, object, object]
+
+_LETTERS = "abcdefghijklmpqrstxyz"
+# A line of plain words with literal numbers, optionally numbered: the fast path (no expressions,
+# parameters or comments), read with one regular expression.
+_SIMPLE = re.compile(r"(?:n(\d+)(?:\.\d*)?)?((?:[" + _LETTERS + r"][-+]?(?:\d+\.?\d*|\.\d+))*)")
+_SIMPLE_WORD = re.compile(r"([" + _LETTERS + r"])([-+]?(?:\d+\.?\d*|\.\d+))")
+_NUMBER_CHARS = frozenset("0123456789.")
+_NUMBER_TOKEN = re.compile(r"[-+]?[0-9.]*")
+_STRTOD = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)")
+_NAME_END = re.compile(r"[^a-z]")
+_OPERATORS = ("**", "*", "/", "+", "-", "mod", "eq", "ne", "gt", "ge", "lt", "le", "and", "or", "xor")
+
+# The largest numbered parameter (overview.adoc, "Numbered Parameters").
+MAX_PARAMETER = 5602
+
+
+def n_label(number: int | None) -> str:
+    """The N column rs274 prints before each canonical call of a block."""
+    if number is None:
+        return "N..... "
+    return "N" + f"{number:<6d}"
+
+
+class Block:
+    """One parsed line.  ``items`` are ``(kind, key, value)`` tuples in source order."""
+
+    __slots__ = ("delete", "items", "label", "line", "n_number", "oword", "resolved", "source")
+
+    def __init__(self, line: int, source: str) -> None:
+        self.line = line
+        self.source = source
+        self.delete = False
+        self.n_number: int | None = None
+        self.label = "N..... "
+        self.items: list[Item] = []
+        self.oword: object = None
+        self.resolved: object = None
+
+    @property
+    def static(self) -> bool:
+        """True when every value on the line is a constant (the block reads the same every time)."""
+        return all(not callable(item[2]) and not callable(item[1]) for item in self.items)
+
+
+def parse_line(raw: str, line: int = 0) -> Block:
+    """Parse one source line (without its newline) into a :class:`Block`.
+
+    >>> b = parse_line("N10 G1 X1.5 Y[2*3] (cut)")
+    >>> b.label, [(k, key) for k, key, _ in b.items]
+    ('N10    ', [(0, 'g'), (0, 'x'), (0, 'y'), (2, '(cut)')])
+    """
+    source = raw.rstrip()
+    block = Block(line, source)
+    try:
+        text = normalize(raw)
+        if text.startswith("/"):
+            block.delete = True
+            text = text[1:]
+        m = _SIMPLE.fullmatch(text)
+        if m is not None:
+            _fast(block, m)
+        else:
+            _Reader(text, block).read_line()
+    except NgcError as err:
+        if err.column is not None:
+            err.column = raw_column(raw, err.column - 1)
+        raise err.locate(file=None, line=line, source=source)
+    return block
+
+
+def _fast(block: Block, m: re.Match[str]) -> None:
+    if m.group(1) is not None:
+        _set_number(block, int(m.group(1)))
+    block.items = [(WORD, letter, float(num)) for letter, num in _SIMPLE_WORD.findall(m.group(2))]
+
+
+def _set_number(block: Block, number: int) -> None:
+    block.n_number = number
+    block.label = n_label(number)
+
+
+def raw_column(raw: str, index: int) -> int:
+    """1-based column in ``raw`` of character ``index`` of its normalized form."""
+    seen = 0
+    in_comment = False
+    for col, c in enumerate(raw):
+        if in_comment or c not in " \t":
+            if seen == index:
+                return col + 1
+            seen += 1
+        if c == "(":
+            in_comment = True
+        elif c == ")":
+            in_comment = False
+    return len(raw) + 1
+
+
+class _Reader:
+    """Reads the items of a normalized line, rs274's way (the general path)."""
+
+    __slots__ = ("block", "i", "s")
+
+    def __init__(self, text: str, block: Block) -> None:
+        self.s = text
+        self.i = 0
+        self.block = block
+
+    def error(self, message: str, at: int | None = None) -> NgcSyntaxError:
+        return NgcSyntaxError(message, column=(self.i if at is None else at) + 1)
+
+    # -- line ---------------------------------------------------------------------------------
+    def read_line(self) -> None:
+        s = self.s
+        if s.startswith("n"):
+            self.read_line_number()
+        items = self.block.items
+        n = len(s)
+        while self.i < n:
+            c = s[self.i]
+            if c == "(":
+                end = s.index(")", self.i)
+                items.append((COMMENT, s[self.i : end + 1], None))
+                self.i = end + 1
+            elif c == "#":
+                items.append(self.read_parameter_setting())
+            elif c in _LETTERS:
+                self.i += 1
+                items.append((WORD, c, self.read_value()))
+            elif c == "o":
+                raise self.error("O-word subroutines and control flow are not supported yet")
+            else:
+                raise self.error(f"Bad character '{c}' used")
+
+    def read_line_number(self) -> None:
+        m = re.compile(r"n(\d+)(?:\.\d*)?").match(self.s)
+        if m is None:
+            raise self.error("Bad format line number")
+        _set_number(self.block, int(m.group(1)))
+        self.i = m.end()
+
+    def read_parameter_setting(self) -> Item:
+        self.i += 1  # '#'
+        target: object
+        if self.s.startswith("<", self.i):
+            target = self.read_name()
+        else:
+            target = self.read_index()
+        if not self.s.startswith("=", self.i):
+            raise self.error("Equal sign missing in parameter setting")
+        self.i += 1
+        return (PARAM, target, self.read_value())
+
+    # -- values -------------------------------------------------------------------------------
+    def read_value(self) -> ex.Value:
+        """A real value: number, ``[expression]``, ``#parameter``, function call, signed value."""
+        s = self.s
+        if self.i >= len(s):
+            raise self.error("No characters found in reading real value")
+        c = s[self.i]
+        if c == "[":
+            return self.read_expression()
+        if c == "#":
+            self.i += 1
+            return self.read_parameter_value()
+        if "a" <= c <= "z":
+            return self.read_function()
+        if c in "+-" and self.i + 1 < len(s) and s[self.i + 1] in "+-[#abcdefghijklmnopqrstuvwxyz":
+            self.i += 1
+            inner = self.read_value()
+            if c == "+":
+                return inner
+            return ex.fold_unary(lambda v: -v, inner)
+        return self.read_number()
+
+    def read_number(self) -> float:
+        m = _NUMBER_TOKEN.match(self.s, self.i)
+        assert m is not None
+        token = m.group()
+        num = _STRTOD.match(token)
+        if num is None:
+            raise self.error(f"bad number format (conversion failed) parsing '{token}'")
+        if num.end() != len(token):
+            raise self.error(f"bad number format (trailing characters) parsing '{token}'")
+        self.i = m.end()
+        return float(token)
+
+    def read_expression(self) -> ex.Value:
+        start = self.i
+        self.i += 1  # '['
+        operands = [self.read_value()]
+        operators: list[str] = []
+        s = self.s
+        while True:
+            if self.i >= len(s):
+                raise self.error("Unclosed expression", start)
+            if s[self.i] == "]":
+                self.i += 1
+                break
+            op = next((o for o in _OPERATORS if s.startswith(o, self.i)), None)
+            if op is None:
+                raise self.error("Unknown operation")
+            self.i += len(op)
+            operators.append(op)
+            operands.append(self.read_value())
+        if not operators:
+            return operands[0]
+        return ex.combine(operands, operators)
+
+    def read_function(self) -> ex.Value:
+        s = self.s
+        m = _NAME_END.search(s, self.i)
+        end = m.start() if m else len(s)
+        word = s[self.i : end]
+        name = next((f for f in _FUNCTIONS if word.startswith(f)), None)
+        if name is None:
+            raise self.error(f"Unknown word starting with {s[self.i]}")
+        self.i += len(name)
+        if not s.startswith("[", self.i):
+            raise self.error("Left bracket missing after unary operation name")
+        if name == "exists":
+            return self.read_exists()
+        arg = self.read_expression()
+        if name == "atan":
+            if not s.startswith("/", self.i):
+                raise self.error("Slash missing after first atan argument")
+            self.i += 1
+            if not s.startswith("[", self.i):
+                raise self.error("Left bracket missing after slash with atan")
+            return ex.fold_binary_fn(ex.atan2_degrees, arg, self.read_expression())
+        return ex.fold_unary(ex.UNARY[name], arg)
+
+    def read_exists(self) -> ex.Value:
+        s = self.s
+        self.i += 1  # '['
+        if not s.startswith("#<", self.i):
+            raise self.error("EXISTS argument must be a named parameter")
+        self.i += 1
+        name = self.read_name()
+        if not s.startswith("]", self.i):
+            raise self.error("Unclosed expression")
+        self.i += 1
+        return lambda p: 1.0 if p.exists(name) else 0.0
+
+    # -- parameters ---------------------------------------------------------------------------
+    def read_name(self) -> str:
+        end = self.s.find(">", self.i)
+        if end < 0:
+            raise self.error("Named parameter not terminated")
+        name = self.s[self.i + 1 : end]
+        self.i = end + 1
+        return name
+
+    def read_index(self) -> int | ex.Expr:
+        value = self.read_value()
+        if isinstance(value, float):
+            return check_index(value)
+        return lambda p: float(check_index(value(p)))
+
+    def read_parameter_value(self) -> ex.Value:
+        if self.s.startswith("<", self.i):
+            name = self.read_name()
+            return lambda p: p.named(name)
+        index = self.read_index()
+        if isinstance(index, int):
+            k = index
+            return lambda p: p.num(k)
+        fn = index
+        return lambda p: p.num(int(fn(p)))
+
+
+_FUNCTIONS = (
+    "abs",
+    "acos",
+    "asin",
+    "atan",
+    "cos",
+    "exists",
+    "exp",
+    "fix",
+    "fup",
+    "ln",
+    "round",
+    "sin",
+    "sqrt",
+    "tan",
+)
+
+
+def check_index(value: float) -> int:
+    """A parameter number: close to an integer and in 1..MAX_PARAMETER (rs274's checks)."""
+    k = integer_value(value)
+    if k < 1 or k > MAX_PARAMETER:
+        raise NgcSyntaxError("Parameter number out of range")
+    return k
+
+
+def integer_value(value: float) -> int:
+    """``value`` as an integer if it is within 0.0001 of one (overview.adoc, "Numbers")."""
+    k = round(value)
+    if abs(value - k) > 0.0001:
+        raise NgcSyntaxError("Non integer value for integer")
+    return int(k)

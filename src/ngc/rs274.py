@@ -1,0 +1,120 @@
+"""``ngc rs274``: a drop-in for LinuxCNC's standalone ``rs274`` in batch mode.
+
+Same options (GNU getopt: options may follow the file), same stdout transcript, same stderr
+(``executing``, then per error the message and the offending source line), same exit code.
+"""
+
+from __future__ import annotations
+
+import getopt
+import sys
+from dataclasses import dataclass
+from typing import TextIO
+
+from .canon import ops
+from .canon.text import TextSink
+from .errors import NgcError
+from .interp.interpreter import Interpreter
+
+USAGE = (
+    "Usage: rs274 [-p interp.so] [-t tool.tbl] [-v var-file.var] [-n 0|1|2]\n"
+    "          [-b] [-s] [-g] [input file [output file]]\n"
+)
+
+
+@dataclass
+class Rs274Options:
+    """The reference's command line, parsed."""
+
+    program: str | None = None
+    output: str | None = None
+    tool_table: str | None = None
+    var_file: str | None = None
+    ini_file: str | None = None
+    on_error: int = 2  # -n: 0 continue, 1 MDI, 2 stop
+    block_delete: bool = False  # -b toggles
+    print_stack: bool = False  # -s toggles
+    batch: bool = False  # -g toggles
+
+
+def parse_args(argv: list[str]) -> Rs274Options:
+    """Parse rs274's options; raises ``ValueError`` with the usage text on a bad command line."""
+    try:
+        pairs, rest = getopt.gnu_getopt(argv, "p:t:v:i:n:bsg")
+    except getopt.GetoptError as err:
+        raise ValueError(f"rs274: {err.msg}\n{USAGE}") from None
+    o = Rs274Options()
+    for flag, value in pairs:
+        if flag == "-t":
+            o.tool_table = value
+        elif flag == "-v":
+            o.var_file = value
+        elif flag == "-i":
+            o.ini_file = value
+        elif flag == "-n":
+            if value not in ("0", "1", "2"):
+                raise ValueError(USAGE)
+            o.on_error = int(value)
+        elif flag == "-b":
+            o.block_delete = not o.block_delete
+        elif flag == "-s":
+            o.print_stack = not o.print_stack
+        elif flag == "-g":
+            o.batch = not o.batch
+        elif flag == "-p":
+            raise ValueError("rs274: -p (pluggable interpreters) is not supported\n")
+    if len(rest) > 2:
+        raise ValueError(USAGE)
+    if rest:
+        o.program = rest[0]
+    if len(rest) > 1:
+        o.output = rest[1]
+    return o
+
+
+def run(argv: list[str], stdout: TextIO | None = None, stderr: TextIO | None = None) -> int:
+    """Run like ``rs274 argv...``; returns the exit code."""
+    out = stdout if stdout is not None else sys.stdout
+    err = stderr if stderr is not None else sys.stderr
+    try:
+        o = parse_args(argv)
+    except ValueError as exc:
+        err.write(str(exc))
+        return 1
+    if o.program is None:
+        err.write("ngc rs274: reading a program from standard input (MDI) is not supported\n")
+        return 1
+    try:
+        handle = open(o.program, encoding="utf-8", errors="surrogateescape", newline="")
+    except OSError as exc:
+        err.write(f"executing\nUnable to open file {o.program}: {exc.strerror}\n")
+        return 1
+    err.write("executing\n")
+    sink = TextSink(out)
+    interp = Interpreter(sink, block_delete=o.block_delete)
+    interp.startup()
+    interp.emit(ops.OnReset())
+    failed = False
+    with handle:
+        try:
+            interp.run(_lines(handle), file=o.program)
+        except NgcError as exc:
+            failed = True
+            report(err, exc)
+    interp.label = "N..... "
+    if o.ini_file is None:
+        interp.emit(ops.OnReset())
+    interp.emit(ops.OnReset())
+    return 1 if failed else 0
+
+
+def _lines(handle: TextIO) -> object:
+    for line in handle:
+        yield line.rstrip("\n")
+
+
+def report(err: TextIO, exc: NgcError) -> None:
+    """rs274's error report: the message, then the source line."""
+    err.write(f"{exc.message}\n")
+    if exc.source is not None:
+        err.write(f"{exc.source}\n")

@@ -1,0 +1,49 @@
+"""Golden cases: each ``tests/golden/cases/<name>.ngc`` with rs274's recorded stdout, stderr, exit code.
+
+The program runs through ``ngc rs274 -g`` in-process and is compared the way the conformance runner
+compares: stdout without the counter column, stderr lines other than ``executing``, the exit code.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+from pathlib import Path
+
+import pytest
+
+from ngc import rs274
+
+CASES = Path(__file__).parent / "golden" / "cases"
+COUNTER = re.compile(r"^ *[0-9]+ ")
+
+
+def normalize(text: str) -> str:
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    return "".join(COUNTER.sub("", line, count=1) + "\n" for line in lines)
+
+
+def messages(text: str) -> list[str]:
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    return [line for line in lines if line != "executing"]
+
+
+def _cases() -> list[str]:
+    return sorted(p.stem for p in CASES.glob("*.ngc"))
+
+
+@pytest.mark.parametrize("name", _cases())
+def test_golden(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(CASES)
+    out, err = io.StringIO(), io.StringIO()
+    rc = rs274.run(["-g", f"{name}.ngc"], stdout=out, stderr=err)
+    expected_out = (CASES / f"{name}.out").read_text(encoding="utf-8", errors="surrogateescape")
+    expected_err = (CASES / f"{name}.err").read_text(encoding="utf-8", errors="surrogateescape")
+    expected_rc = int((CASES / f"{name}.rc").read_text())
+    assert messages(err.getvalue()) == messages(expected_err)
+    assert normalize(out.getvalue()) == expected_out
+    assert rc == expected_rc
