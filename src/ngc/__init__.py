@@ -12,6 +12,7 @@ from __future__ import annotations
 from .canon.ops import Op, Sink
 from .errors import NgcError
 from .interp.interpreter import Interpreter
+from .report import CheckResult, Summary, check_file, summarize
 
 __version__ = "0.1.0"
 
@@ -26,4 +27,14 @@ def interpret(text: str, sink: Sink, *, file: str | None = None) -> None:
     interp.run(text.splitlines(), file=file)
 
 
-__all__ = ["Interpreter", "NgcError", "Op", "Sink", "interpret"]
+__all__ = [
+    "CheckResult",
+    "Interpreter",
+    "NgcError",
+    "Op",
+    "Sink",
+    "Summary",
+    "check_file",
+    "interpret",
+    "summarize",
+]

@@ -9,6 +9,7 @@ from __future__ import annotations
 import getopt
 import sys
 from dataclasses import dataclass
+from collections.abc import Iterator
 from typing import TextIO
 
 from .canon import ops
@@ -100,17 +101,19 @@ def run(argv: list[str], stdout: TextIO | None = None, stderr: TextIO | None = N
             interp.run(_lines(handle), file=o.program)
         except NgcError as exc:
             failed = True
+            sink.flush()
             report(err, exc)
     interp.label = "N..... "
     if o.ini_file is None:
         interp.emit(ops.OnReset())
     interp.emit(ops.OnReset())
+    sink.flush()
     return 1 if failed else 0
 
 
-def _lines(handle: TextIO) -> object:
+def _lines(handle: TextIO) -> Iterator[str]:
     for line in handle:
-        yield line.rstrip("\n")
+        yield line[:-1] if line.endswith("\n") else line
 
 
 def report(err: TextIO, exc: NgcError) -> None:

@@ -11,17 +11,36 @@ from .ops import Op
 
 
 class TextSink:
-    """Writes the rs274 transcript to a text stream."""
+    """Writes the rs274 transcript to a text stream.
 
-    __slots__ = ("_count", "_write")
+    Lines are collected and written in batches (``flush`` writes the rest; call it at the end).
+    """
+
+    __slots__ = ("_count", "_lines", "_stream", "_templates")
+
+    BATCH = 4096
 
     def __init__(self, stream: TextIO) -> None:
-        self._write = stream.write
+        self._stream = stream
+        self._lines: list[str] = []
         self._count = 0
+        self._templates: dict[type, str] = {}
 
     def emit(self, op: Op, label: str, line: int) -> None:
         self._count += 1
-        self._write("%5d %s%s\n" % (self._count, label, op.TEXT % op))  # noqa: UP031
+        cls = type(op)
+        template = self._templates.get(cls)
+        if template is None:
+            template = self._templates[cls] = "%5d %s" + op.TEXT + "\n"
+        lines = self._lines
+        lines.append(template % (self._count, label, *op))
+        if len(lines) >= self.BATCH:
+            self.flush()
 
     def print_text(self, text: str) -> None:
-        self._write(text + "\n")
+        self._lines.append(text + "\n")
+
+    def flush(self) -> None:
+        """Write what is collected."""
+        self._stream.write("".join(self._lines))
+        self._lines.clear()

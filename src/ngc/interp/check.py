@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..errors import NgcSemanticError
 from ..language import codes
-from .resolve import Resolved
+from ..language.words import Words as Resolved
 from .state import State
 
 _ARC = (20, 30)
@@ -30,7 +30,7 @@ def check(st: State, r: Resolved) -> None:
         _check_g53(st, motion)
     if r.has_axes:
         _check_axis_users(st, motion, non_modal)
-    if w:
+    if r.others:
         active = _active_motion(st, r, motion, non_modal)
         _check_other_words(r, active, non_modal)
 

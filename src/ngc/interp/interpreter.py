@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 from ..canon import ops
 from ..errors import NgcError, NgcProgramError, NgcSemanticError
 from ..language import codes
-from ..language.parser import Block, parse_line
+from ..language.parser import Block, fast_words, n_label, parse_line
 from .check import check
 from .handlers import coordinates, modes, motion, program
 from .parameters import Parameters
@@ -22,6 +22,8 @@ from .state import State
 
 if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
+
+_new = tuple.__new__
 
 
 class Interpreter:
@@ -61,8 +63,8 @@ class Interpreter:
         percent = False
         started = False
         last_no, last_text = 0, ""
+        plain = self.execute_plain
         for number, raw in enumerate(lines, 1):
-            raw = raw.rstrip("\r\n")
             last_no, last_text = number, raw
             if not started:
                 if not raw.strip():
@@ -75,13 +77,30 @@ class Interpreter:
                 self.label = "N..... "
                 self.emit(ops.Finish())
                 return
-            self.execute_line(raw, number)
-            if self.ended:
-                return
+            if not plain(raw, number):
+                self.execute_line(raw, number)
+                if self.ended:
+                    return
         message = "File ended with no percent sign" if percent else (
             "File ended with no percent sign or program end"
         )
         raise NgcProgramError(message, file=file, line=last_no, source=last_text.rstrip())
+
+    def execute_plain(self, raw: str, number: int) -> bool:
+        """Execute ``raw`` if it is a plain line (see :func:`fast_words`); False if it is not."""
+        if "(" in raw or ";" in raw or "/" in raw or "\t" in raw or "\r" in raw:
+            return False
+        try:
+            found = fast_words(raw.replace(" ", "").lower())
+            if found is None or not found[0].plain:
+                return False
+            words, digits = found
+            self.label = n_label(digits) if digits is not None else "N..... "
+            self.line = self.state.line = number
+            self.convert_plain(words)
+        except NgcError as err:
+            raise err.locate(file=self.file, line=number, source=raw.rstrip()) from None
+        return True
 
     def execute_line(self, raw: str, number: int) -> None:
         try:
@@ -97,16 +116,59 @@ class Interpreter:
         self.label = block.label
         self.line = self.state.line = block.line
         try:
-            r = resolve(block, self.params)
-            assign = self.params.assign
-            for target, value in r.assigns:
-                assign(target, value)
+            r = block.resolved or resolve(block, self.params)
+            if r.plain:
+                self.convert_plain(r)
+                return
+            if r.assigns:
+                assign = self.params.assign
+                for target, value in r.assigns:
+                    assign(target, value)
             check(self.state, r)
             self.convert(r)
         except NgcError as err:
             raise err.locate(file=self.file, line=block.line, source=block.source) from None
 
     # -- convert ------------------------------------------------------------------------------
+    def convert_plain(self, r: Resolved) -> None:
+        """The hot path: a block of only a motion code and axis/F/S words (most CAM output).
+
+        Same checks and order as :meth:`convert` for such a block, without the general dispatch.
+        """
+        w = r.w
+        if "f" in w:
+            modes.feed_rate(self, w["f"])
+        if "s" in w:
+            modes.spindle_speed(self, w["s"])
+        st = self.state
+        code = r.g.get(codes.G_MOTION)
+        if code is None:
+            if not r.has_axes:
+                return
+            code = st.motion
+            if code == 800:
+                raise NgcSemanticError("Cannot use axis values without a g code that uses them")
+        elif code == 800:
+            if r.has_axes:
+                raise NgcSemanticError("Cannot use axis values with g80")
+            self.convert_motion(r.g, r)
+            return
+        if code > 10:
+            self.convert_motion(r.g, r)
+            return
+        st.motion = code
+        pos = st.pos
+        if st.absolute:
+            end = [w.get("x", pos[0]), w.get("y", pos[1]), w.get("z", pos[2]),
+                   w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
+        else:
+            end = motion.end_point(self, r, False)
+        if code == 0:
+            self.sink.emit(_new(ops.StraightTraverse, end), self.label, self.line)
+            st.pos = end
+        else:
+            motion.feed(self, r, end)
+
     def convert(self, r: Resolved) -> None:
         """Execute a checked block in the order of overview.adoc, "G-code Order of Execution"."""
         if r.comment is not None:

@@ -130,6 +130,11 @@ class Parameters:
         return int(value)
 
     # -- writing ------------------------------------------------------------------------------
+    def declare(self, name: str) -> None:
+        """A named parameter exists (reading 0) from the moment its setting is read (rs274)."""
+        scope = self.globals if name.startswith("_") else self.locals[-1]
+        scope.setdefault(name, 0.0)
+
     def assign(self, target: int | str, value: float) -> None:
         """Set a numbered or named parameter (the queued settings of a block)."""
         if isinstance(target, int):

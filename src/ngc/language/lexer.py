@@ -15,7 +15,9 @@ _WHITESPACE_TABLE = str.maketrans("", "", " \t\r\n")
 def normalize(raw: str) -> str:
     """Return ``raw`` with white space removed and letters lower-cased outside comments."""
     if "(" not in raw and ";" not in raw:
-        return raw.translate(_WHITESPACE_TABLE).lower()
+        if "\t" in raw or "\r" in raw:
+            raw = raw.translate(_WHITESPACE_TABLE)
+        return raw.replace(" ", "").lower()
     out: list[str] = []
     i = 0
     n = len(raw)

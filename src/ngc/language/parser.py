@@ -13,6 +13,8 @@ import re
 from ..errors import NgcError, NgcSyntaxError
 from . import expressions as ex
 from .lexer import normalize
+from .words import INTEGER_LETTERS as _INTEGER_LETTERS
+from .words import Words, add_word, integer_value
 
 WORD = 0
 PARAM = 1
@@ -21,10 +23,10 @@ COMMENT = 2
 Item = tuple[int, object, object]
 
 _LETTERS = "abcdefghijklmpqrstxyz"
-# A line of plain words with literal numbers, optionally numbered: the fast path (no expressions,
-# parameters or comments), read with one regular expression.
-_SIMPLE = re.compile(r"(?:n(\d+)(?:\.\d*)?)?((?:[" + _LETTERS + r"][-+]?(?:\d+\.?\d*|\.\d+))*)")
-_SIMPLE_WORD = re.compile(r"([" + _LETTERS + r"])([-+]?(?:\d+\.?\d*|\.\d+))")
+_LETTER_SPLIT = re.compile(r"([a-z])")
+_LINE_NUMBER = re.compile(r"(\d+)(?:\.\d*)?")
+# Letters the fast path takes: plain real-valued words (no M, no integer words, no N/O).
+_FAST_LETTERS = frozenset("abcefgijkpqrsxyz")
 _NUMBER_CHARS = frozenset("0123456789.")
 _NUMBER_TOKEN = re.compile(r"[-+]?[0-9.]*")
 _STRTOD = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)")
@@ -35,11 +37,11 @@ _OPERATORS = ("**", "*", "/", "+", "-", "mod", "eq", "ne", "gt", "ge", "lt", "le
 MAX_PARAMETER = 5602
 
 
-def n_label(number: int | None) -> str:
-    """The N column rs274 prints before each canonical call of a block."""
-    if number is None:
+def n_label(digits: str | None) -> str:
+    """The N column rs274 prints before each canonical call of a block (digits as written)."""
+    if digits is None:
         return "N..... "
-    return "N" + f"{number:<6d}"
+    return "N" + f"{digits:<6s}"
 
 
 class Block:
@@ -55,12 +57,8 @@ class Block:
         self.label = "N..... "
         self.items: list[Item] = []
         self.oword: object = None
-        self.resolved: object = None
-
-    @property
-    def static(self) -> bool:
-        """True when every value on the line is a constant (the block reads the same every time)."""
-        return all(not callable(item[2]) and not callable(item[1]) for item in self.items)
+        # The block's words when every value on the line is a constant (read once, reused).
+        self.resolved: Words | None = None
 
 
 def parse_line(raw: str, line: int = 0) -> Block:
@@ -77,11 +75,9 @@ def parse_line(raw: str, line: int = 0) -> Block:
         if text.startswith("/"):
             block.delete = True
             text = text[1:]
-        m = _SIMPLE.fullmatch(text)
-        if m is not None:
-            _fast(block, m)
-        else:
+        if not _fast(block, text):
             _Reader(text, block).read_line()
+            _resolve_constant(block)
     except NgcError as err:
         if err.column is not None:
             err.column = raw_column(raw, err.column - 1)
@@ -89,15 +85,67 @@ def parse_line(raw: str, line: int = 0) -> Block:
     return block
 
 
-def _fast(block: Block, m: re.Match[str]) -> None:
-    if m.group(1) is not None:
-        _set_number(block, int(m.group(1)))
-    block.items = [(WORD, letter, float(num)) for letter, num in _SIMPLE_WORD.findall(m.group(2))]
+def _fast(block: Block, text: str) -> bool:
+    """Plain words with literal numbers: resolved here, once (see :func:`fast_words`)."""
+    found = fast_words(text)
+    if found is None:
+        return False
+    words, digits = found
+    if digits is not None:
+        _set_number(block, digits)
+    block.resolved = words
+    return True
 
 
-def _set_number(block: Block, number: int) -> None:
-    block.n_number = number
-    block.label = n_label(number)
+def fast_words(text: str) -> tuple[Words, str | None] | None:
+    """Read a normalized line of plain words with literal numbers (the common CAM line).
+
+    Splitting on letters and letting ``float`` judge each number is the cheapest way to read such
+    a line; anything unusual (expressions, parameters, comments, bad numbers, repeated or unknown
+    letters, M or integer words) returns None and takes the general reader.  Returns the words and
+    the N word's digits.
+    """
+    parts = _LETTER_SPLIT.split(text)
+    if parts[0] or not text.isascii() or "_" in text:
+        return None
+    digits = None
+    if len(parts) > 1 and parts[1] == "n":
+        m = _LINE_NUMBER.fullmatch(parts[2])
+        if m is None:
+            return None
+        digits = m.group(1)
+        del parts[1:3]
+    letters = parts[1::2]
+    try:
+        w = dict(zip(letters, map(float, parts[2::2])))
+    except ValueError:
+        return None
+    if len(w) != len(letters) or not _FAST_LETTERS.issuperset(w):
+        return None
+    words = Words()
+    g = w.pop("g", None)
+    if g is not None:
+        add_word(words, "g", g)
+    words.w = w
+    return words.finish(), digits
+
+
+def _resolve_constant(block: Block) -> None:
+    """Resolve a block now if nothing on it can change between executions."""
+    words = Words()
+    for kind, key, value in block.items:
+        if kind == PARAM or not isinstance(value, float | None):
+            return
+        if kind == WORD:
+            add_word(words, key, value)  # type: ignore[arg-type]
+        else:
+            words.comment = key  # type: ignore[assignment]
+    block.resolved = words.finish()
+
+
+def _set_number(block: Block, digits: str) -> None:
+    block.n_number = int(digits)
+    block.label = n_label(digits)
 
 
 def raw_column(raw: str, index: int) -> int:
@@ -156,7 +204,7 @@ class _Reader:
         m = re.compile(r"n(\d+)(?:\.\d*)?").match(self.s)
         if m is None:
             raise self.error("Bad format line number")
-        _set_number(self.block, int(m.group(1)))
+        _set_number(self.block, m.group(1))
         self.i = m.end()
 
     def read_parameter_setting(self) -> Item:
@@ -313,11 +361,3 @@ def check_index(value: float) -> int:
     if k < 1 or k > MAX_PARAMETER:
         raise NgcSyntaxError("Parameter number out of range")
     return k
-
-
-def integer_value(value: float) -> int:
-    """``value`` as an integer if it is within 0.0001 of one (overview.adoc, "Numbers")."""
-    k = round(value)
-    if abs(value - k) > 0.0001:
-        raise NgcSyntaxError("Non integer value for integer")
-    return int(k)

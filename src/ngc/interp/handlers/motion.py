@@ -50,6 +50,9 @@ def end_point(it: Interpreter, r: Resolved, machine: bool) -> list[float]:
             pos[3] + w.get("a", 0.0), pos[4] + w.get("b", 0.0), pos[5] + w.get("c", 0.0)]
 
 
+_new = tuple.__new__
+
+
 def traverse(it: Interpreter, end: list[float]) -> None:
     it.emit(ops.StraightTraverse(*end))
     it.state.pos = end
@@ -58,10 +61,11 @@ def traverse(it: Interpreter, end: list[float]) -> None:
 def feed(it: Interpreter, r: Resolved, end: list[float]) -> None:
     """G1."""
     st = it.state
-    _check_feed(it, r, "g1")
-    if st.feed_mode == 930:
-        it.emit(ops.SetFeedRate(_inverse_rate(st.feed, _line_length(st.pos, end))))
-    it.emit(ops.StraightFeed(*end))
+    if st.feed_mode != 940 or st.feed == 0.0:
+        _check_feed(it, r, "g1")
+        if st.feed_mode == 930:
+            it.emit(ops.SetFeedRate(_inverse_rate(st.feed, _line_length(st.pos, end))))
+    it.sink.emit(_new(ops.StraightFeed, end), it.label, it.line)
     st.pos = end
 
 

@@ -1,0 +1,405 @@
+"""What a program does, summed up from its canonical operations: move counts, rapid and feed
+path lengths, and the extents of the toolpath (``ngc check``).
+
+The summary is a consumer of canon (DESIGN.md, "Data flow"): it never looks into the interpreter,
+it follows the current point the way a canon implementation does.  Canon speaks program units and
+program coordinates, so the current point is re-expressed whenever the units (USE_LENGTH_UNITS) or
+the work offsets (SET_G5X_OFFSET, SET_G92_OFFSET) change.  Lengths and extents are kept in the
+current program units and converted, with the current point, when the units change, so a program
+that never changes units is summed without any conversion (and its rounding noise).  An XY
+rotation (G10 L2 R) is not followed: extents are in the program's own, unrotated coordinates.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass
+from typing import TextIO
+
+from .canon import ops
+from .canon.ops import Op
+from .errors import NgcError
+from .interp.interpreter import Interpreter
+
+MM_PER_UNIT = {"CANON_UNITS_MM": 1.0, "CANON_UNITS_INCHES": 25.4, "CANON_UNITS_CM": 10.0}
+UNIT_NAMES = {"CANON_UNITS_MM": "mm", "CANON_UNITS_INCHES": "inch", "CANON_UNITS_CM": "cm"}
+
+# SELECT_PLANE -> where ARC_FEED's (first, second, axis) coordinates sit in (x, y, z).
+PLANE_AXES = {
+    "CANON_PLANE_XY": (0, 1, 2),
+    "CANON_PLANE_XZ": (2, 0, 1),
+    "CANON_PLANE_YZ": (1, 2, 0),
+}
+
+TAU = 2.0 * math.pi
+QUADRANT_ANGLES = (0.0, 0.5 * math.pi, math.pi, 1.5 * math.pi)
+
+Point = tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class Extents:
+    """The axis-aligned box around a toolpath: lowest and highest X, Y, Z."""
+
+    low: Point
+    high: Point
+
+
+@dataclass(frozen=True)
+class Summary:
+    """Counts and lengths of a program's motion.
+
+    Lengths and extents are in ``units`` (``"mm"``, ``"inch"`` or ``"cm"``), the length units in
+    effect when the program ended; ``mixed_units`` says the units changed after the first move
+    (everything is converted).  ``extents`` bounds the end points of the moves and the extreme
+    points of the arcs (not the point the machine starts from); ``None`` when nothing moved.
+    """
+
+    units: str
+    traverses: int
+    feeds: int
+    arcs: int
+    rapid_length: float
+    feed_length: float
+    extents: Extents | None
+    mixed_units: bool
+
+    @property
+    def moves(self) -> int:
+        """All motion operations: traverses, straight feeds and arcs."""
+        return self.traverses + self.feeds + self.arcs
+
+
+class Summarizer:
+    """A canon sink that keeps only a running summary (constant memory, any program length)."""
+
+    __slots__ = (
+        "_arcs",
+        "_axes",
+        "_feed_length",
+        "_feeds",
+        "_handlers",
+        "_high",
+        "_low",
+        "_mm_per_unit",
+        "_offsets",
+        "_pos",
+        "_rapid_length",
+        "_traverses",
+        "_units",
+        "_units_changed",
+    )
+
+    def __init__(self) -> None:
+        self._pos = [0.0, 0.0, 0.0]  # current point, program units and coordinates
+        self._offsets = {"g5x": (0.0, 0.0, 0.0), "g92": (0.0, 0.0, 0.0)}  # program units
+        self._units = "CANON_UNITS_MM"
+        self._units_changed = False  # after something moved
+        self._mm_per_unit = 1.0
+        self._axes = PLANE_AXES["CANON_PLANE_XY"]
+        self._traverses = self._feeds = self._arcs = 0
+        # in current program units, like the current point
+        self._rapid_length = self._feed_length = 0.0
+        self._low = [math.inf] * 3
+        self._high = [-math.inf] * 3
+        self._handlers: dict[type, Callable[[Op], None]] = {
+            ops.StraightTraverse: self._traverse,
+            ops.StraightFeed: self._feed,
+            ops.ArcFeed: self._arc,
+            ops.SelectPlane: self._plane,
+            ops.UseLengthUnits: self._length_units,
+            ops.SetG5xOffset: self._g5x,
+            ops.SetG92Offset: self._g92,
+        }
+
+    # -- the sink protocol ------------------------------------------------------------------------
+    def emit(self, op: Op, label: str, line: int) -> None:
+        self.add(op)
+
+    def print_text(self, text: str) -> None:
+        """``(PRINT,...)`` output does not move the machine."""
+
+    def add(self, op: Op) -> None:
+        """Follow one canonical operation."""
+        handler = self._handlers.get(type(op))
+        if handler is not None:
+            handler(op)
+
+    def summary(self) -> Summary:
+        """The summary of everything seen so far, in the current units."""
+        extents = None
+        if self._low[0] <= self._high[0]:
+            extents = Extents(
+                (self._low[0], self._low[1], self._low[2]),
+                (self._high[0], self._high[1], self._high[2]),
+            )
+        return Summary(
+            units=UNIT_NAMES.get(self._units, self._units),
+            traverses=self._traverses,
+            feeds=self._feeds,
+            arcs=self._arcs,
+            rapid_length=self._rapid_length,
+            feed_length=self._feed_length,
+            extents=extents,
+            mixed_units=self._units_changed,
+        )
+
+    # -- modes and offsets ------------------------------------------------------------------------
+    def _plane(self, op: Op) -> None:
+        assert isinstance(op, ops.SelectPlane)
+        self._axes = PLANE_AXES.get(op.plane, self._axes)
+
+    def _length_units(self, op: Op) -> None:
+        """The same physical point, re-expressed in the new units (as rs274's canon does); the
+        totals so far follow."""
+        assert isinstance(op, ops.UseLengthUnits)
+        new_mm_per_unit = MM_PER_UNIT.get(op.units, 1.0)
+        ratio = self._mm_per_unit / new_mm_per_unit
+        if ratio != 1.0:
+            self._units_changed |= self._traverses + self._feeds + self._arcs > 0
+            self._pos = [v * ratio for v in self._pos]
+            self._offsets = {k: _scaled(v, ratio) for k, v in self._offsets.items()}
+            self._low = [v * ratio for v in self._low]
+            self._high = [v * ratio for v in self._high]
+            self._rapid_length *= ratio
+            self._feed_length *= ratio
+        self._mm_per_unit = new_mm_per_unit
+        self._units = op.units
+
+    def _g5x(self, op: Op) -> None:
+        assert isinstance(op, ops.SetG5xOffset)
+        self._shift_origin("g5x", (op.x, op.y, op.z))
+
+    def _g92(self, op: Op) -> None:
+        assert isinstance(op, ops.SetG92Offset)
+        self._shift_origin("g92", (op.x, op.y, op.z))
+
+    def _shift_origin(self, which: str, new: Point) -> None:
+        """The tool stays put while the origin moves, so its program coordinates change."""
+        old = self._offsets[which]
+        self._pos = [self._pos[i] + old[i] - new[i] for i in range(3)]
+        self._offsets[which] = new
+
+    # -- motion -----------------------------------------------------------------------------------
+    def _traverse(self, op: Op) -> None:
+        assert isinstance(op, ops.StraightTraverse)
+        self._traverses += 1
+        self._rapid_length += self._line_to((op.x, op.y, op.z))
+
+    def _feed(self, op: Op) -> None:
+        assert isinstance(op, ops.StraightFeed)
+        self._feeds += 1
+        self._feed_length += self._line_to((op.x, op.y, op.z))
+
+    def _line_to(self, end: Point) -> float:
+        """Move in a straight line; returns its length."""
+        start = self._pos
+        self._include(end)
+        self._pos = list(end)
+        return math.dist(start, end)
+
+    def _arc(self, op: Op) -> None:
+        assert isinstance(op, ops.ArcFeed)
+        self._arcs += 1
+        first, second, axis = self._axes
+        pos = self._pos
+        arc = Arc(
+            start=(pos[first], pos[second], pos[axis]),
+            end=(op.first_end, op.second_end, op.axis_end_point),
+            center=(op.first_axis, op.second_axis),
+            rotation=op.rotation,
+        )
+        for p in arc.extremes():
+            xyz = [0.0, 0.0, 0.0]
+            xyz[first], xyz[second], xyz[axis] = p
+            self._include(xyz)
+        end = [0.0, 0.0, 0.0]
+        end[first], end[second], end[axis] = arc.end
+        self._include(end)
+        self._pos = end
+        self._feed_length += arc.length()
+
+    def _include(self, p: Iterable[float]) -> None:
+        low, high = self._low, self._high
+        for i, v in enumerate(p):
+            if v < low[i]:
+                low[i] = v
+            if v > high[i]:
+                high[i] = v
+
+
+def _scaled(p: Point, ratio: float) -> Point:
+    return (p[0] * ratio, p[1] * ratio, p[2] * ratio)
+
+
+@dataclass(frozen=True)
+class Arc:
+    """An ARC_FEED in plane coordinates: (first, second, axis) start and end, the center in the
+    plane, and rs274's rotation (positive: counterclockwise turns, negative: clockwise).
+
+    Start and end may lie at different radii (LinuxCNC accepts a slight spiral); the radius then
+    changes linearly with the angle, as does the helix axis coordinate.
+
+    >>> quarter = Arc(start=(1.0, 0.0, 0.0), end=(0.0, 1.0, 0.0), center=(0.0, 0.0), rotation=1)
+    >>> round(quarter.length(), 6) == round(math.pi / 2, 6)
+    True
+    >>> [tuple(round(v, 6) for v in p) for p in quarter.extremes()]
+    [(1.0, 0.0, 0.0), (0.0, 1.0, 0.0)]
+    """
+
+    start: Point
+    end: Point
+    center: tuple[float, float]
+    rotation: int
+
+    def _radii(self) -> tuple[float, float]:
+        c1, c2 = self.center
+        return (
+            math.hypot(self.start[0] - c1, self.start[1] - c2),
+            math.hypot(self.end[0] - c1, self.end[1] - c2),
+        )
+
+    def _start_angle(self) -> float:
+        return math.atan2(self.start[1] - self.center[1], self.start[0] - self.center[0])
+
+    def sweep(self) -> float:
+        """The angle travelled, in radians (always positive; a full circle when start == end)."""
+        a0 = self._start_angle()
+        a1 = math.atan2(self.end[1] - self.center[1], self.end[0] - self.center[0])
+        delta = (a1 - a0) % TAU if self.rotation > 0 else (a0 - a1) % TAU
+        if delta == 0.0:
+            delta = TAU
+        return delta + TAU * (max(abs(self.rotation), 1) - 1)
+
+    def length(self) -> float:
+        """Path length, helix rise included."""
+        r0, r1 = self._radii()
+        planar = self.sweep() * (r0 + r1) / 2.0
+        return math.hypot(planar, self.end[2] - self.start[2])
+
+    def extremes(self) -> list[Point]:
+        """The points where the arc crosses the 0°, 90°, 180° and 270° directions of its
+        center: with the end points, they bound the arc."""
+        sweep = self.sweep()
+        a0 = self._start_angle()
+        direction = 1.0 if self.rotation > 0 else -1.0
+        r0, r1 = self._radii()
+        c1, c2 = self.center
+        z0, z1 = self.start[2], self.end[2]
+        points = []
+        for theta in QUADRANT_ANGLES:
+            travelled = ((theta - a0) * direction) % TAU
+            if travelled > sweep:
+                continue
+            t = travelled / sweep
+            r = r0 + (r1 - r0) * t
+            points.append((c1 + r * math.cos(theta), c2 + r * math.sin(theta), z0 + (z1 - z0) * t))
+        return points
+
+
+def summarize(operations: Iterable[Op]) -> Summary:
+    """Sum up a sequence of canonical operations.
+
+    >>> from ngc.canon.ops import ArcFeed, StraightFeed, StraightTraverse
+    >>> s = summarize([
+    ...     StraightTraverse(10.0, 0.0, 0.0, 0.0, 0.0, 0.0),
+    ...     StraightFeed(10.0, 10.0, 0.0, 0.0, 0.0, 0.0),
+    ...     ArcFeed(0.0, 0.0, 5.0, 5.0, 1, 0.0, 0.0, 0.0, 0.0),  # half circle back to X0 Y0
+    ... ])
+    >>> s.moves, s.units, s.rapid_length, round(s.feed_length, 4)
+    (3, 'mm', 10.0, 32.2144)
+    >>> [round(v, 4) for v in s.extents.low + s.extents.high]  # the arc bulges past X0 and Y10
+    [-2.0711, 0.0, 0.0, 10.0, 12.0711, 0.0]
+    """
+    summarizer = Summarizer()
+    for op in operations:
+        summarizer.add(op)
+    return summarizer.summary()
+
+
+@dataclass(frozen=True)
+class CheckResult:
+    """The outcome of checking one program file: its line count, the summary of what ran (up to
+    the error, if there is one) and the first error, or ``None``."""
+
+    path: str
+    lines: int
+    summary: Summary
+    error: NgcError | None
+
+    @property
+    def ok(self) -> bool:
+        return self.error is None
+
+
+def check_file(path: str | os.PathLike[str]) -> CheckResult:
+    """Run a program file through the interpreter, keeping only a summary of its motion.
+
+    Raises ``OSError`` if the file cannot be read; errors in the program are returned in
+    :attr:`CheckResult.error` (interpretation stops at the first one).
+
+    >>> import pathlib, tempfile
+    >>> program = pathlib.Path(tempfile.mkdtemp()) / "square.ngc"
+    >>> _ = program.write_text("G20 F10\\nG1 X1\\nY1\\nX0\\nY0\\nM2\\n")
+    >>> result = check_file(program)
+    >>> result.ok, result.lines, result.summary.feeds, result.summary.feed_length
+    (True, 6, 4, 4.0)
+    >>> _ = program.write_text("G1 X1\\nM2\\n")
+    >>> error = check_file(program).error
+    >>> error.line, error.message
+    (1, 'Cannot do g1 with zero feed rate')
+    """
+    name = os.fspath(path)
+    summarizer = Summarizer()
+    error: NgcError | None = None
+    with open(name, encoding="utf-8", errors="surrogateescape", newline="") as handle:
+        counted = _CountedLines(handle)
+        interp = Interpreter(summarizer)
+        interp.startup()
+        try:
+            interp.run(counted, file=name)
+        except NgcError as exc:
+            error = exc
+        lines = counted.count + sum(1 for _ in handle)
+    return CheckResult(path=name, lines=lines, summary=summarizer.summary(), error=error)
+
+
+class _CountedLines:
+    """The lines of a file without their newline, counting how many were read."""
+
+    def __init__(self, handle: TextIO) -> None:
+        self._handle = handle
+        self.count = 0
+
+    def __iter__(self) -> Iterator[str]:
+        for line in self._handle:
+            self.count += 1
+            yield line.rstrip("\n")
+
+
+def render(result: CheckResult) -> str:
+    """``ngc check``'s report on one file: the error (``file:line:col: message``), if any, then
+    a paragraph with the line count, the moves, the path lengths and the extents."""
+    s = result.summary
+    head = f"{result.path}: ok" if result.ok else f"{result.path}: stopped at the error above"
+    paragraph = [
+        f"{head}, {result.lines} lines",
+        f"  moves: {s.moves} ({s.traverses} traverse, {s.feeds} feed, {s.arcs} arc)",
+        f"  rapid length: {s.rapid_length:.4f} {s.units}, "
+        f"feed length: {s.feed_length:.4f} {s.units}",
+        f"  extents: {_extents_text(s)}",
+    ]
+    if s.mixed_units:
+        paragraph.append(f"  (the program changes length units; all lengths are in {s.units})")
+    if result.error is not None:
+        paragraph.insert(0, f"{result.error.where()}: {result.error.message}")
+    return "\n".join(paragraph)
+
+
+def _extents_text(s: Summary) -> str:
+    if s.extents is None:
+        return "none (no motion)"
+    lo, hi = s.extents.low, s.extents.high
+    return "  ".join(f"{a} {lo[i]:.4f} .. {hi[i]:.4f}" for i, a in enumerate("XYZ")) + f" {s.units}"
