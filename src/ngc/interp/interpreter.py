@@ -13,7 +13,8 @@ from typing import TYPE_CHECKING
 from ..canon import ops
 from ..errors import NgcError, NgcProgramError, NgcSemanticError
 from ..language import codes
-from ..language.parser import Block, fast_words, n_label, parse_line
+from ..language.parser import Block, n_label, parse_line, split_plain, words_of
+from ..language.words import Words
 from .check import check
 from .handlers import coordinates, modes, motion, program
 from .parameters import Parameters
@@ -24,6 +25,13 @@ if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
 
 _new = tuple.__new__
+_AXES = frozenset("xyzabc")
+# Lines of only these letters and a motion code (or none) take the fast path.
+_PLAIN_LETTERS = frozenset("xyzabcfs")
+# ... and, with G2/G3 on the line, these.
+_ARC_LETTERS = frozenset("xyzabcfsijkrp")
+_ARCS = (20, 30)
+_MOTION_BY_VALUE = {code / 10: code for code, known in codes.G_CODES.items() if known.group == 1}
 
 
 class Interpreter:
@@ -79,28 +87,40 @@ class Interpreter:
                 return
             if not plain(raw, number):
                 self.execute_line(raw, number)
-                if self.ended:
-                    return
+            if self.ended:
+                return
         message = "File ended with no percent sign" if percent else (
             "File ended with no percent sign or program end"
         )
         raise NgcProgramError(message, file=file, line=last_no, source=last_text.rstrip())
 
     def execute_plain(self, raw: str, number: int) -> bool:
-        """Execute ``raw`` if it is a plain line (see :func:`fast_words`); False if it is not."""
+        """Execute ``raw`` if it is a line of plain words (see :func:`split_plain`); else False."""
         if "(" in raw or ";" in raw or "/" in raw or "\t" in raw or "\r" in raw:
             return False
         try:
-            found = fast_words(raw.replace(" ", "").lower())
-            if found is None or not found[0].plain:
+            found = split_plain(raw.replace(" ", "").lower())
+            if found is None:
                 return False
-            words, digits = found
-            self.label = n_label(digits) if digits is not None else "N..... "
-            self.line = self.state.line = number
-            self.convert_plain(words)
+            w, g, digits = found
+            code = None if g is None else _MOTION_BY_VALUE.get(g)
+            if (g is None or code is not None) and (
+                _PLAIN_LETTERS.issuperset(w)
+                or (code in _ARCS and _ARC_LETTERS.issuperset(w))
+            ):
+                self.label = n_label(digits) if digits is not None else "N..... "
+                self.line = self.state.line = number
+                self.convert_plain(w, code)
+                return True
+            block = Block(number, raw.rstrip())
+            block.resolved = words_of(w, g)
+            if digits is not None:
+                block.n_number = int(digits)
+                block.label = n_label(digits)
+            self.execute(block)
+            return True
         except NgcError as err:
             raise err.locate(file=self.file, line=number, source=raw.rstrip()) from None
-        return True
 
     def execute_line(self, raw: str, number: int) -> None:
         try:
@@ -118,7 +138,7 @@ class Interpreter:
         try:
             r = block.resolved or resolve(block, self.params)
             if r.plain:
-                self.convert_plain(r)
+                self.convert_plain(r.w, r.g.get(codes.G_MOTION))
                 return
             if r.assigns:
                 assign = self.params.assign
@@ -130,31 +150,34 @@ class Interpreter:
             raise err.locate(file=self.file, line=block.line, source=block.source) from None
 
     # -- convert ------------------------------------------------------------------------------
-    def convert_plain(self, r: Resolved) -> None:
+    def convert_plain(self, w: dict[str, float], code: int | None) -> None:
         """The hot path: a block of only a motion code and axis/F/S words (most CAM output).
 
         Same checks and order as :meth:`convert` for such a block, without the general dispatch.
         """
-        w = r.w
         if "f" in w:
             modes.feed_rate(self, w["f"])
         if "s" in w:
             modes.spindle_speed(self, w["s"])
         st = self.state
-        code = r.g.get(codes.G_MOTION)
+        has_axes = not _AXES.isdisjoint(w)
         if code is None:
-            if not r.has_axes:
+            if not has_axes:
                 return
             code = st.motion
             if code == 800:
                 raise NgcSemanticError("Cannot use axis values without a g code that uses them")
-        elif code == 800:
-            if r.has_axes:
-                raise NgcSemanticError("Cannot use axis values with g80")
-            self.convert_motion(r.g, r)
-            return
+        elif code == 800 and has_axes:
+            raise NgcSemanticError("Cannot use axis values with g80")
         if code > 10:
-            self.convert_motion(r.g, r)
+            if code in _ARCS:
+                st.motion = code
+                motion.arc(self, w, motion.end_point(self, w, False), code)
+                return
+            r = Words()
+            r.g[codes.G_MOTION] = code
+            r.w = w
+            self.convert_motion(r.g, r.finish())
             return
         st.motion = code
         pos = st.pos
@@ -162,12 +185,12 @@ class Interpreter:
             end = [w.get("x", pos[0]), w.get("y", pos[1]), w.get("z", pos[2]),
                    w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
         else:
-            end = motion.end_point(self, r, False)
+            end = motion.relative_end(st.pos, w)
         if code == 0:
             self.sink.emit(_new(ops.StraightTraverse, end), self.label, self.line)
             st.pos = end
         else:
-            motion.feed(self, r, end)
+            motion.feed(self, w, end)
 
     def convert(self, r: Resolved) -> None:
         """Execute a checked block in the order of overview.adoc, "G-code Order of Execution"."""
@@ -255,10 +278,10 @@ class Interpreter:
         st.motion = code
         if code == 800:
             return
-        end = motion.end_point(self, r, g.get(codes.G_NON_MODAL) == 530)
+        end = motion.end_point(self, r.w, g.get(codes.G_NON_MODAL) == 530)
         if code == 0:
             motion.traverse(self, end)
         elif code == 10:
-            motion.feed(self, r, end)
+            motion.feed(self, r.w, end)
         else:
-            motion.arc(self, r, end, code)
+            motion.arc(self, r.w, end, code)

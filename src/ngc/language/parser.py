@@ -86,24 +86,24 @@ def parse_line(raw: str, line: int = 0) -> Block:
 
 
 def _fast(block: Block, text: str) -> bool:
-    """Plain words with literal numbers: resolved here, once (see :func:`fast_words`)."""
-    found = fast_words(text)
+    """Plain words with literal numbers: resolved here, once (see :func:`split_plain`)."""
+    found = split_plain(text)
     if found is None:
         return False
-    words, digits = found
+    w, g, digits = found
     if digits is not None:
         _set_number(block, digits)
-    block.resolved = words
+    block.resolved = words_of(w, g)
     return True
 
 
-def fast_words(text: str) -> tuple[Words, str | None] | None:
+def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] | None:
     """Read a normalized line of plain words with literal numbers (the common CAM line).
 
     Splitting on letters and letting ``float`` judge each number is the cheapest way to read such
     a line; anything unusual (expressions, parameters, comments, bad numbers, repeated or unknown
-    letters, M or integer words) returns None and takes the general reader.  Returns the words and
-    the N word's digits.
+    letters, M or integer words) returns None and takes the general reader.  Returns the non-G
+    words, the G word's value and the N word's digits.
     """
     parts = _LETTER_SPLIT.split(text)
     if parts[0] or not text.isascii() or "_" in text:
@@ -122,12 +122,16 @@ def fast_words(text: str) -> tuple[Words, str | None] | None:
         return None
     if len(w) != len(letters) or not _FAST_LETTERS.issuperset(w):
         return None
+    return w, w.pop("g", None), digits
+
+
+def words_of(w: dict[str, float], g: float | None) -> Words:
+    """The :class:`Words` of a line read by :func:`split_plain`."""
     words = Words()
-    g = w.pop("g", None)
     if g is not None:
         add_word(words, "g", g)
     words.w = w
-    return words.finish(), digits
+    return words.finish()
 
 
 def _resolve_constant(block: Block) -> None:

@@ -74,7 +74,20 @@ def add_word(words: Words, letter: str, v: float) -> None:
         w[letter] = v
 
 
+# Every known G code by its value as read (1.0 -> G1), for the common exact values.
+_G_BY_VALUE: dict[float, tuple[int, int]] = {
+    code / 10: (known.group, code) for code, known in codes.G_CODES.items()
+}
+
+
 def _g_word(words: Words, v: float) -> None:
+    hit = _G_BY_VALUE.get(v)
+    if hit is not None:
+        group, code = hit
+        if group in words.g:
+            raise NgcSemanticError("Two g codes used from same modal group")
+        words.g[group] = code
+        return
     if v < 0.0:
         raise NgcSyntaxError("Negative g code used")
     tenths = v * 10.0

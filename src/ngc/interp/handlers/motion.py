@@ -34,10 +34,9 @@ PLANES: dict[int, tuple[int, int, int, str, str, str, str]] = {
 }
 
 
-def end_point(it: Interpreter, r: Resolved, machine: bool) -> list[float]:
+def end_point(it: Interpreter, w: dict[str, float], machine: bool) -> list[float]:
     """The block's target in program coordinates (G53: axis words are machine coordinates)."""
     st = it.state
-    w = r.w
     pos = st.pos
     if machine:
         current = coordinates.to_machine(st, pos)
@@ -46,6 +45,11 @@ def end_point(it: Interpreter, r: Resolved, machine: bool) -> list[float]:
     if st.absolute:
         return [w.get("x", pos[0]), w.get("y", pos[1]), w.get("z", pos[2]),
                 w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
+    return relative_end(pos, w)
+
+
+def relative_end(pos: list[float], w: dict[str, float]) -> list[float]:
+    """G91: axis words are distances from the current point."""
     return [pos[0] + w.get("x", 0.0), pos[1] + w.get("y", 0.0), pos[2] + w.get("z", 0.0),
             pos[3] + w.get("a", 0.0), pos[4] + w.get("b", 0.0), pos[5] + w.get("c", 0.0)]
 
@@ -58,21 +62,21 @@ def traverse(it: Interpreter, end: list[float]) -> None:
     it.state.pos = end
 
 
-def feed(it: Interpreter, r: Resolved, end: list[float]) -> None:
+def feed(it: Interpreter, w: dict[str, float], end: list[float]) -> None:
     """G1."""
     st = it.state
     if st.feed_mode != 940 or st.feed == 0.0:
-        _check_feed(it, r, "g1")
+        _check_feed(it, w, "g1")
         if st.feed_mode == 930:
             it.emit(ops.SetFeedRate(_inverse_rate(st.feed, _line_length(st.pos, end))))
     it.sink.emit(_new(ops.StraightFeed, end), it.label, it.line)
     st.pos = end
 
 
-def _check_feed(it: Interpreter, r: Resolved, name: str) -> None:
+def _check_feed(it: Interpreter, w: dict[str, float], name: str) -> None:
     st = it.state
     if st.feed_mode == 930:
-        if "f" not in r.w:
+        if "f" not in w:
             raise NgcSemanticError(f"F word missing with inverse time {name} move")
     elif st.feed_mode == 950:
         if st.speed == 0.0:
@@ -96,10 +100,9 @@ def _inverse_rate(f: float, length: float) -> float:
 
 
 # -- arcs ---------------------------------------------------------------------------------------
-def arc(it: Interpreter, r: Resolved, end: list[float], code: int) -> None:
+def arc(it: Interpreter, w: dict[str, float], end: list[float], code: int) -> None:
     """G2 (clockwise) / G3 (counterclockwise) in the active plane."""
     st = it.state
-    w = r.w
     plane = PLANES.get(st.plane)
     if plane is None:
         raise NgcSemanticError("Arcs are not supported in the G17.1/G18.1/G19.1 planes")
@@ -111,7 +114,7 @@ def arc(it: Interpreter, r: Resolved, end: list[float], code: int) -> None:
         raise NgcSemanticError("R i j k words all missing for arc")
     if "r" in w and has_ij:
         raise NgcSemanticError("Mixed radius ijk format for arc")
-    _check_feed(it, r, f"g{code // 10}")
+    _check_feed(it, w, f"g{code // 10}")
     turns = _turns(w.get("p"))
     start = st.pos
     s1, s2 = start[first], start[second]
