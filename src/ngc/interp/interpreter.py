@@ -167,8 +167,12 @@ class Interpreter:
             code = st.motion
             if code == 800:
                 raise NgcSemanticError("Cannot use axis values without a g code that uses them")
-        elif code == 800 and has_axes:
-            raise NgcSemanticError("Cannot use axis values with g80")
+        elif code == 800:
+            if has_axes:
+                raise NgcSemanticError("Cannot use axis values with g80")
+            st.motion = code
+            self.emit(ops.Comment("interpreter: motion mode set to none"))
+            return
         if code > 10:
             if code in _ARCS:
                 st.motion = code
@@ -242,7 +246,7 @@ class Interpreter:
         if codes.G_DISTANCE in g:
             modes.distance_mode(self, g[codes.G_DISTANCE])
         if codes.G_ARC_DISTANCE in g:
-            self.state.arc_absolute = g[codes.G_ARC_DISTANCE] == 901
+            modes.arc_distance_mode(self, g[codes.G_ARC_DISTANCE])
         if codes.G_RETRACT in g:
             self.state.retract_r = g[codes.G_RETRACT] == 980
         code = g.get(codes.G_NON_MODAL)
@@ -262,8 +266,7 @@ class Interpreter:
             coordinates.home_store(self, code)
         elif code in (280, 300):
             middle, home = coordinates.home_targets(self, code, r)
-            if middle is not None:
-                motion.traverse(self, middle)
+            motion.traverse(self, middle)
             motion.traverse(self, home)
 
     def convert_motion(self, g: dict[int, int], r: Resolved) -> None:
@@ -277,6 +280,8 @@ class Interpreter:
             raise NgcSemanticError(f"{codes.g_name(code)} is not supported yet")
         st.motion = code
         if code == 800:
+            if codes.G_MOTION in g:
+                self.emit(ops.Comment("interpreter: motion mode set to none"))
             return
         end = motion.end_point(self, r.w, g.get(codes.G_NON_MODAL) == 530)
         if code == 0:

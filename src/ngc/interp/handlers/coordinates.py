@@ -252,20 +252,24 @@ def home_store(it: Interpreter, code: int) -> None:
         it.params.numbered[base + i] = _to_user(st, i, machine[i])
 
 
-def home_targets(it: Interpreter, code: int, r: Resolved) -> tuple[Vec | None, Vec]:
-    """G28 / G30: the optional intermediate point and the stored point, in program coordinates."""
+def home_targets(it: Interpreter, code: int, r: Resolved) -> tuple[Vec, Vec]:
+    """G28 / G30: the intermediate point and the end point, in program coordinates.
+
+    rs274 first moves to the point the axis words give (the current point without them), then
+    sets the given axes (all axes without axis words) to the stored position, in program
+    coordinates.
+    """
     st = it.state
     base = G28_HOME if code == 280 else G30_HOME
     numbered = it.params.numbered
     words = _axis_words(r)
-    machine_home = [_from_user(st, i, numbered[base + i]) for i in range(AXES)]
-    if not words:
-        return None, to_program(st, machine_home)
+    home = to_program(st, [_from_user(st, i, numbered[base + i]) for i in range(AXES)])
     middle = list(st.pos)
     for i, v in words:
         middle[i] = v if st.absolute else st.pos[i] + v
-    machine_mid = to_machine(st, middle)
-    target = list(machine_mid)
+    if not words:
+        return middle, home
+    target = list(middle)
     for i, _v in words:
-        target[i] = machine_home[i]
-    return middle, to_program(st, target)
+        target[i] = home[i]
+    return middle, target

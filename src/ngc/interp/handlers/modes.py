@@ -144,8 +144,8 @@ def control_mode(it: Interpreter, code: int, r: Resolved) -> None:
     elif code == 611:
         it.emit(ops.SetMotionControlMode("CANON_EXACT_STOP"))
     else:
-        p = r.w.get("p", 0.0)
-        q = r.w.get("q", p)
+        p = max(r.w.get("p", 0.0), 0.0)
+        q = max(r.w.get("q", p), 0.0)
         st.path_tolerance = p
         st.naive_tolerance = q
         it.emit(ops.SetMotionControlContinuous(p))
@@ -159,3 +159,13 @@ def distance_mode(it: Interpreter, code: int) -> None:
         word = "absolute" if absolute else "incremental"
         it.emit(ops.Comment(f"interpreter: distance mode changed to {word}"))
     st.absolute = absolute
+
+
+def arc_distance_mode(it: Interpreter, code: int) -> None:
+    """G90.1 / G91.1: arc centers absolute or relative to the start point."""
+    st = it.state
+    absolute = code == 901
+    if absolute != st.arc_absolute:
+        word = "absolute" if absolute else "incremental"
+        it.emit(ops.Comment(f"interpreter: IJK distance mode changed to {word}"))
+    st.arc_absolute = absolute

@@ -24,7 +24,6 @@ CENTER_ARC_TOLERANCE_MM = 2 * 0.01 * math.sqrt(2.0)
 CENTER_ARC_RELATIVE_TOLERANCE = 0.001
 RADIUS_TOLERANCE_INCH = 0.00005
 RADIUS_TOLERANCE_MM = RADIUS_TOLERANCE_INCH * 25.4
-ZERO_RADIUS = 1e-12
 
 # plane code -> (first axis, second axis, helix axis, center letters, forbidden letter, names)
 PLANES: dict[int, tuple[int, int, int, str, str, str, str]] = {
@@ -79,10 +78,10 @@ def _check_feed(it: Interpreter, w: dict[str, float], name: str) -> None:
         if "f" not in w:
             raise NgcSemanticError(f"F word missing with inverse time {name} move")
     elif st.feed_mode == 950:
-        if st.speed == 0.0:
-            raise NgcSemanticError("Cannot feed with zero spindle speed in feed per rev mode")
         if st.feed == 0.0:
             raise NgcSemanticError(f"Cannot do {name} with zero feed rate")
+        if st.speed == 0.0:
+            raise NgcSemanticError("Cannot feed with zero spindle speed in feed per rev mode")
     elif st.feed == 0.0:
         raise NgcSemanticError(f"Cannot do {name} with zero feed rate")
 
@@ -105,7 +104,7 @@ def arc(it: Interpreter, w: dict[str, float], end: list[float], code: int) -> No
     st = it.state
     plane = PLANES.get(st.plane)
     if plane is None:
-        raise NgcSemanticError("Arcs are not supported in the G17.1/G18.1/G19.1 planes")
+        raise NgcSemanticError("Cannot do an arc in planes G17.1, G18.1, or G19.1")
     first, second, helix, letters, forbidden, pname, labels = plane
     if forbidden in w:
         raise NgcSemanticError(f"{forbidden.upper()} word given for arc in {pname} plane")
@@ -114,12 +113,16 @@ def arc(it: Interpreter, w: dict[str, float], end: list[float], code: int) -> No
         raise NgcSemanticError("R i j k words all missing for arc")
     if "r" in w and has_ij:
         raise NgcSemanticError("Mixed radius ijk format for arc")
-    _check_feed(it, w, f"g{code // 10}")
+    _check_arc_feed(it, w)
     turns = _turns(w.get("p"))
     start = st.pos
     s1, s2 = start[first], start[second]
     e1, e2 = end[first], end[second]
     if "r" in w:
+        axis_letters = "xyz"[first] + "xyz"[second]
+        if axis_letters[0] not in w and axis_letters[1] not in w:
+            a, b = sorted(axis_letters)
+            raise NgcSemanticError(f"{a.upper()} and {b} words missing for arc in {pname} plane")
         c1, c2 = _radius_center(it, code, w["r"], s1, s2, e1, e2)
     else:
         c1, c2 = _ijk_center(it, w, letters, s1, s2, e1, e2, labels)
@@ -141,6 +144,17 @@ def _turns(p: float | None) -> int:
     return int(p)
 
 
+def _check_arc_feed(it: Interpreter, w: dict[str, float]) -> None:
+    st = it.state
+    if st.feed_mode == 930:
+        if "f" not in w:
+            raise NgcSemanticError("F word missing with inverse time arc move")
+    elif st.feed == 0.0:
+        raise NgcSemanticError("Cannot make arc with zero feed rate")
+    elif st.feed_mode == 950 and st.speed == 0.0:
+        raise NgcSemanticError("Cannot feed with zero spindle speed in feed per rev mode")
+
+
 def _ijk_center(
     it: Interpreter, w: dict[str, float], letters: str,
     s1: float, s2: float, e1: float, e2: float, labels: str,
@@ -148,6 +162,9 @@ def _ijk_center(
     o1 = w.get(letters[0], 0.0)
     o2 = w.get(letters[1], 0.0)
     if it.state.arc_absolute:
+        for letter in letters:
+            if letter not in w:
+                raise NgcSemanticError(f"{letter.upper()} word missing in absolute center arc")
         c1, c2 = o1, o2
     else:
         c1, c2 = s1 + o1, s2 + o2
@@ -158,7 +175,8 @@ def _ijk_center(
         f"start=({a}{s1:.4f},{b}{s2:.4f}) center=({a}{c1:.4f},{b}{c2:.4f}) "
         f"end=({a}{e1:.4f},{b}{e2:.4f}) r1={r1:.4f} r2={r2:.4f}"
     )
-    if r1 < ZERO_RADIUS or r2 < ZERO_RADIUS:
+    zero = RADIUS_TOLERANCE_MM if it.state.metric else RADIUS_TOLERANCE_INCH
+    if r1 < zero or r2 < zero:
         raise NgcSemanticError(f"Zero-radius arc: {where}")
     abs_err = abs(r1 - r2)
     rel_err = abs_err / max(r1, r2)
@@ -187,7 +205,9 @@ def _radius_center(
     side = -1.0 if code == 20 else 1.0
     if radius < 0:
         side = -side
-    offset = math.sqrt(max(abs_r * abs_r - half * half, 0.0))
+    # The center's distance from the chord as rs274 computes it (through the half angle, which
+    # leaves a residue of the order of 1e-17 for a half circle: the printed -0.0000).
+    offset = abs_r * math.cos(math.asin(min(half / abs_r, 1.0)))
     m1 = (s1 + e1) / 2.0
     m2 = (s2 + e2) / 2.0
     angle = theta + side * math.pi / 2.0
