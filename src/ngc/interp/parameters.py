@@ -24,6 +24,11 @@ COORD_SYSTEM = 5220
 G54_ORIGIN = 5221  # G54 X; each system takes 20 numbers, rotation at +9
 COORD_STRIDE = 20
 CURRENT_POSITION = 5420
+DEBUG_ENABLE = 5599  # 0 silences (DEBUG,...) comments
+# Written by the machine only: a program that sets them gets "Parameter is readonly".
+READ_ONLY = frozenset(range(5400, 5414)) | frozenset(range(5420, 5429))
+# Tool-changer fault parameters: rs274 accepts the setting and keeps 0.
+IGNORED_WRITES = frozenset({5600, 5601})
 
 Getter = Callable[[State], float]
 
@@ -34,6 +39,12 @@ def _flag(attr: str, value: object) -> Getter:
 
 def _pos(axis: int) -> Getter:
     return lambda s: s.pos[axis]
+
+
+def _machine(s: State, axis: int) -> float:
+    from .handlers.coordinates import to_machine
+
+    return to_machine(s, s.pos)[axis]
 
 
 # Predefined read-only named parameters (overview.adoc, "Predefined Named Parameters").
@@ -76,12 +87,18 @@ PREDEFINED: dict[str, Getter] = {
     "_a": _pos(3),
     "_b": _pos(4),
     "_c": _pos(5),
+    "_abs_x": lambda s: _machine(s, 0),
+    "_abs_y": lambda s: _machine(s, 1),
+    "_abs_z": lambda s: _machine(s, 2),
+    "_abs_a": lambda s: _machine(s, 3),
+    "_abs_b": lambda s: _machine(s, 4),
+    "_abs_c": lambda s: _machine(s, 5),
     "_u": lambda s: 0.0,
     "_v": lambda s: 0.0,
     "_w": lambda s: 0.0,
     "_current_tool": lambda s: 0.0,
-    "_current_pocket": lambda s: 0.0,
-    "_selected_tool": lambda s: -1.0,
+    "_current_pocket": lambda s: 1.0,
+    "_selected_tool": lambda s: 0.0,
     "_selected_pocket": lambda s: -1.0,
     "_value": lambda s: 0.0,
     "_value_returned": lambda s: 0.0,
@@ -99,6 +116,7 @@ class Parameters:
     def __init__(self, state: State) -> None:
         self.state = state
         self.numbered = [0.0] * (MAX_PARAMETER + 1)
+        self.numbered[DEBUG_ENABLE] = 1.0
         self.globals: dict[str, float] = {}
         self.locals: list[dict[str, float]] = [{}]
 
@@ -138,12 +156,19 @@ class Parameters:
     def assign(self, target: int | str, value: float) -> None:
         """Set a numbered or named parameter (the queued settings of a block)."""
         if isinstance(target, int):
-            self.numbered[target] = value
+            if target not in IGNORED_WRITES:
+                self.numbered[target] = value
         elif target.startswith("_"):
             self.globals[target] = value
         else:
             self.locals[-1][target] = value
 
+
+
+def check_number_writable(index: int) -> None:
+    """System parameters the machine maintains are read-only."""
+    if index in READ_ONLY:
+        raise NgcRuntimeError("Parameter is readonly")
 
 
 def check_writable(name: str) -> None:

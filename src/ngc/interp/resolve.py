@@ -9,7 +9,7 @@ from __future__ import annotations
 from ..language.expressions import ParamContext
 from ..language.parser import COMMENT, PARAM, WORD, Block, check_index
 from ..language.words import Words, add_word
-from .parameters import Parameters, check_writable
+from .parameters import Parameters, check_number_writable, check_writable
 
 Resolved = Words
 
@@ -38,9 +38,11 @@ def _param(r: Words, key: object, value: object, params: Parameters) -> None:
         params.declare(key)
         target = key
     elif isinstance(key, int):
+        check_number_writable(key)
         target = key
     else:
         target = check_index(key(params))  # type: ignore[operator]
+        check_number_writable(target)
     v = value if type(value) is float else value(params)  # type: ignore[operator]
     r.assigns.append((target, v))  # type: ignore[arg-type]
 

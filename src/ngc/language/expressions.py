@@ -62,7 +62,7 @@ def _div(a: float, b: float) -> float:
 
 def _mod(a: float, b: float) -> float:
     if b == 0.0:
-        raise NgcRuntimeError("Attempt to divide by zero")
+        raise NgcRuntimeError("Calculation resulted in 'not a number'")
     r = math.fmod(a, b)
     if r < 0.0:
         r += abs(b)
@@ -74,10 +74,8 @@ def _pow(a: float, b: float) -> float:
         raise NgcRuntimeError("Attempt to raise negative to non integer power")
     try:
         return float(a**b)
-    except ZeroDivisionError:
-        raise NgcRuntimeError("Attempt to divide by zero") from None
-    except OverflowError:
-        return math.inf
+    except (ZeroDivisionError, OverflowError):
+        raise NgcRuntimeError("Calculation resulted in 'infinity'") from None
 
 
 def _bool(x: bool) -> float:

@@ -24,6 +24,7 @@ Item = tuple[int, object, object]
 
 _LETTERS = "abcdefghijklmpqrstxyz"
 _LETTER_SPLIT = re.compile(r"([a-z])")
+_N_WORD = re.compile(r"n(\d+)(?:\.\d*)?")
 _LINE_NUMBER = re.compile(r"(\d+)(?:\.\d*)?")
 # Letters the fast path takes: plain real-valued words (no M, no integer words, no N/O).
 _FAST_LETTERS = frozenset("abcefgijkpqrsxyz")
@@ -34,7 +35,7 @@ _NAME_END = re.compile(r"[^a-z]")
 _OPERATORS = ("**", "*", "/", "+", "-", "mod", "eq", "ne", "gt", "ge", "lt", "le", "and", "or", "xor")
 
 # The largest numbered parameter (overview.adoc, "Numbered Parameters").
-MAX_PARAMETER = 5602
+MAX_PARAMETER = 5601
 
 
 def n_label(digits: str | None) -> str:
@@ -152,6 +153,12 @@ def _set_number(block: Block, digits: str) -> None:
     block.label = n_label(digits)
 
 
+def _show_char(c: str) -> str:
+    """A character as rs274 shows it: bytes above 127 in octal (the program is read as bytes)."""
+    code = ord(c)
+    return f"\\{code:o}" if code > 127 else c
+
+
 def raw_column(raw: str, index: int) -> int:
     """1-based column in ``raw`` of character ``index`` of its normalized form."""
     seen = 0
@@ -202,12 +209,12 @@ class _Reader:
             elif c == "o":
                 raise self.error("O-word subroutines and control flow are not supported yet")
             else:
-                raise self.error(f"Bad character '{c}' used")
+                raise self.error(f"Bad character '{_show_char(c)}' used")
 
     def read_line_number(self) -> None:
-        m = re.compile(r"n(\d+)(?:\.\d*)?").match(self.s)
+        m = _N_WORD.match(self.s)
         if m is None:
-            raise self.error("Bad format line number")
+            raise self.error("Bad format unsigned integer")
         _set_number(self.block, m.group(1))
         self.i = m.end()
 
@@ -271,6 +278,9 @@ class _Reader:
                 break
             op = next((o for o in _OPERATORS if s.startswith(o, self.i)), None)
             if op is None:
+                c = s[self.i]
+                if "a" <= c <= "z":
+                    raise self.error(f"Unknown operation name starting with {c}")
                 raise self.error("Unknown operation")
             self.i += len(op)
             operators.append(op)
@@ -286,6 +296,8 @@ class _Reader:
         word = s[self.i : end]
         name = next((f for f in _FUNCTIONS if word.startswith(f)), None)
         if name is None:
+            if len(word) < 2:
+                raise self.error("Unknown word where unary operation could be")
             raise self.error(f"Unknown word starting with {s[self.i]}")
         self.i += len(name)
         if not s.startswith("[", self.i):
@@ -305,8 +317,16 @@ class _Reader:
     def read_exists(self) -> ex.Value:
         s = self.s
         self.i += 1  # '['
+        if not s.startswith("#", self.i):
+            raise self.error("Expected # reading parameter")
         if not s.startswith("#<", self.i):
-            raise self.error("EXISTS argument must be a named parameter")
+            # rs274 reads a numbered parameter here and reports that it exists.
+            self.i += 1
+            self.read_index()
+            if not s.startswith("]", self.i):
+                raise self.error("Unclosed expression")
+            self.i += 1
+            return 1.0
         self.i += 1
         name = self.read_name()
         if not s.startswith("]", self.i):

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 
 from ...canon import ops
 from ...errors import NgcProgramError, NgcRuntimeError
+from ..parameters import DEBUG_ENABLE
 from . import coordinates
 
 if TYPE_CHECKING:
@@ -23,14 +24,17 @@ def comment(it: Interpreter, text: str) -> None:
     body = text[1:-1]
     m = _COMMAND.match(body)
     if m is None:
-        it.emit(ops.Comment(body))
+        body = body.lstrip(" \t")
+        if body:
+            it.emit(ops.Comment(body))
         return
     kind = m.group(1).lower()
     rest = body[m.end() :]
     if kind == "msg":
         it.emit(ops.Message(rest))
     elif kind == "debug":
-        it.emit(ops.Message(substitute(it, rest)))
+        if it.params.numbered[DEBUG_ENABLE] != 0.0:
+            it.emit(ops.Message(substitute(it, rest)))
     elif kind == "print":
         it.sink.print_text(substitute(it, rest))
     else:
@@ -49,15 +53,19 @@ def substitute(it: Interpreter, text: str) -> str:
         if token[0] == "%":
             fmt = {"%d": "%.0f", "%f": "%.4f"}.get(token, "%" + token[1:])
             continue
-        out.append(fmt % _parameter(it, token))
+        value = _parameter(it, token)
+        out.append("######" if value is None else fmt % (value + 0.0))
     out.append(text[pos:])
     return "".join(out)
 
 
-def _parameter(it: Interpreter, token: str) -> float:
+def _parameter(it: Interpreter, token: str) -> float | None:
+    """The value a ``#...`` in a comment stands for; None for an undefined name."""
     params = it.params
     if token[1] == "<":
         name = "".join(token[2:-1].split()).lower()
+        if not params.exists(name):
+            return None
         return params.named(name)
     index = int(token[1:])
     if index < 1 or index >= len(params.numbered):
