@@ -41,8 +41,8 @@ def test_golden(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.chdir(CASES)
     out, err = io.StringIO(), io.StringIO()
     rc = rs274.run(["-g", f"{name}.ngc"], stdout=out, stderr=err)
-    expected_out = (CASES / f"{name}.out").read_text(encoding="utf-8", errors="surrogateescape")
-    expected_err = (CASES / f"{name}.err").read_text(encoding="utf-8", errors="surrogateescape")
+    expected_out = (CASES / f"{name}.out").read_text(encoding="latin-1")
+    expected_err = (CASES / f"{name}.err").read_text(encoding="latin-1")
     expected_rc = int((CASES / f"{name}.rc").read_text())
     assert messages(err.getvalue()) == messages(expected_err)
     assert normalize(out.getvalue()) == expected_out

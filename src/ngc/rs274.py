@@ -7,6 +7,7 @@ Same options (GNU getopt: options may follow the file), same stdout transcript, 
 from __future__ import annotations
 
 import getopt
+import io
 import sys
 from dataclasses import dataclass
 from collections.abc import Iterator
@@ -74,9 +75,34 @@ def parse_args(argv: list[str]) -> Rs274Options:
 
 
 def run(argv: list[str], stdout: TextIO | None = None, stderr: TextIO | None = None) -> int:
-    """Run like ``rs274 argv...``; returns the exit code."""
-    out = stdout if stdout is not None else sys.stdout
-    err = stderr if stderr is not None else sys.stderr
+    """Run like ``rs274 argv...``; returns the exit code.
+
+    Without streams, writes to the process's stdout and stderr byte for byte (latin-1), as the
+    program text is read.
+    """
+    if stdout is None or stderr is None:
+        out = stdout or _byte_stream(sys.stdout)
+        err = stderr or _byte_stream(sys.stderr)
+        try:
+            return _run(argv, out, err)
+        finally:
+            for stream, given in ((out, stdout), (err, stderr)):
+                if given is None:
+                    stream.flush()
+                    if isinstance(stream, io.TextIOWrapper):
+                        stream.detach()
+    return _run(argv, stdout, stderr)
+
+
+def _byte_stream(stream: TextIO) -> TextIO:
+    buffer = getattr(stream, "buffer", None)
+    if buffer is None:
+        return stream
+    stream.flush()
+    return io.TextIOWrapper(buffer, encoding="latin-1", newline="\n", line_buffering=False)
+
+
+def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
     try:
         o = parse_args(argv)
     except ValueError as exc:
@@ -86,7 +112,8 @@ def run(argv: list[str], stdout: TextIO | None = None, stderr: TextIO | None = N
         err.write("ngc rs274: reading a program from standard input (MDI) is not supported\n")
         return 1
     try:
-        handle = open(o.program, encoding="utf-8", errors="surrogateescape", newline="")
+        # Bytes in, bytes out: rs274 reads a program as bytes (latin-1 maps each byte to one char).
+        handle = open(o.program, encoding="latin-1", newline="")
     except OSError as exc:
         err.write(f"executing\nUnable to open file {o.program}: {exc.strerror}\n")
         return 1

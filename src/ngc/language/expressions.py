@@ -132,9 +132,14 @@ def _exp(x: float) -> float:
         return math.inf
 
 
+def _signed(r: float, x: float) -> float:
+    """C's rounding functions keep the sign of a zero result (FUP[-0.5] is -0)."""
+    return math.copysign(r, x) if r == 0.0 else r
+
+
 def _round(x: float) -> float:
     # C round(): halves away from zero.
-    return float(math.floor(abs(x) + 0.5)) * (1.0 if x >= 0 else -1.0)
+    return _signed(float(math.floor(abs(x) + 0.5)) * (1.0 if x >= 0 else -1.0), x)
 
 
 UNARY: dict[str, Callable[[float], float]] = {
@@ -143,8 +148,8 @@ UNARY: dict[str, Callable[[float], float]] = {
     "asin": _asin,
     "cos": lambda x: math.cos(math.radians(x)),
     "exp": _exp,
-    "fix": lambda x: float(math.floor(x)),
-    "fup": lambda x: float(math.ceil(x)),
+    "fix": lambda x: _signed(float(math.floor(x)), x),
+    "fup": lambda x: _signed(float(math.ceil(x)), x),
     "round": _round,
     "ln": _ln,
     "sin": lambda x: math.sin(math.radians(x)),

@@ -32,6 +32,7 @@ _NUMBER_CHARS = frozenset("0123456789.")
 _NUMBER_TOKEN = re.compile(r"[-+]?[0-9.]*")
 _STRTOD = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)")
 _NAME_END = re.compile(r"[^a-z]")
+_OPERATOR_INITIALS = frozenset("aeglmnox")
 _OPERATORS = ("**", "*", "/", "+", "-", "mod", "eq", "ne", "gt", "ge", "lt", "le", "and", "or", "xor")
 
 # The largest numbered parameter (overview.adoc, "Numbered Parameters").
@@ -279,7 +280,7 @@ class _Reader:
             op = next((o for o in _OPERATORS if s.startswith(o, self.i)), None)
             if op is None:
                 c = s[self.i]
-                if "a" <= c <= "z":
+                if c in _OPERATOR_INITIALS:
                     raise self.error(f"Unknown operation name starting with {c}")
                 raise self.error("Unknown operation")
             self.i += len(op)
