@@ -18,6 +18,7 @@ Exit codes (one policy for every subcommand, see :func:`main`):
 from __future__ import annotations
 
 import argparse
+import io
 import os
 import sys
 from collections.abc import Callable, Iterator
@@ -79,6 +80,7 @@ def dispatch(args: list[str]) -> int:
     """Run one subcommand.  ``rs274`` bypasses argparse: its options are rs274's own (getopt)."""
     if args and args[0] == "rs274":
         return rs274.run(args[1:])
+    _pass_bytes_through()
     parser = build_parser()
     try:
         options = parser.parse_args(args)
@@ -89,6 +91,14 @@ def dispatch(args: list[str]) -> int:
         return EXIT_USAGE
     command: Callable[[argparse.Namespace], int] = options.run
     return command(options)
+
+
+def _pass_bytes_through() -> None:
+    """Programs are read as UTF-8 with undecodable bytes kept as surrogates; write those bytes
+    back as they were instead of failing (a UTF-8 locale's stdout is strict)."""
+    for stream in (sys.stdout, sys.stderr):
+        if isinstance(stream, io.TextIOWrapper):
+            stream.reconfigure(errors="surrogateescape")
 
 
 def build_parser() -> argparse.ArgumentParser:

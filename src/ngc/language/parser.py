@@ -316,24 +316,23 @@ class _Reader:
         return ex.fold_unary(ex.UNARY[name], arg)
 
     def read_exists(self) -> ex.Value:
+        """EXISTS[#<name>]: 1 if the named parameter exists; EXISTS[#n]: 1 if n is in range."""
         s = self.s
         self.i += 1  # '['
         if not s.startswith("#", self.i):
             raise self.error("Expected # reading parameter")
-        if not s.startswith("#<", self.i):
-            # rs274 reads a numbered parameter here and reports that it exists.
-            self.i += 1
-            self.read_index()
-            if not s.startswith("]", self.i):
-                raise self.error("Unclosed expression")
-            self.i += 1
-            return 1.0
         self.i += 1
-        name = self.read_name()
+        result: ex.Value
+        if s.startswith("<", self.i):
+            name = self.read_name()
+            result = lambda p: 1.0 if p.exists(name) else 0.0  # noqa: E731
+        else:
+            index = self.read_value()
+            result = ex.fold_unary(lambda v: 1.0 if 1 <= round(v) <= MAX_PARAMETER else 0.0, index)
         if not s.startswith("]", self.i):
-            raise self.error("Unclosed expression")
+            raise self.error("Expected ] reading bracketed parameter")
         self.i += 1
-        return lambda p: 1.0 if p.exists(name) else 0.0
+        return result
 
     # -- parameters ---------------------------------------------------------------------------
     def read_name(self) -> str:

@@ -153,33 +153,27 @@ def _g10_origin(it: Interpreter, r: Resolved, l_word: int) -> None:
 
 
 def _l20_origin(it: Interpreter, values: dict[int, float], index: int) -> dict[int, float]:
-    """Origins that make the current machine position read ``values`` in system ``index``."""
+    """Origins that make the current machine position read ``values`` in system ``index``.
+
+    Axes not given keep their current coordinate; with a rotation, giving X or Y moves the
+    origin in both X and Y.
+    """
     st = it.state
     machine = _keep_machine_position(it)
     base = G54_ORIGIN + COORD_STRIDE * (index - 1)
     numbered = it.params.numbered
     rot = numbered[base + 9]
     origin = [_from_user(st, i, numbered[base + i]) for i in range(AXES)]
-    out: dict[int, float] = {}
-    if rot and (0 in values or 1 in values):
-        # The given X/Y are rotated coordinates: origin = machine - rotate(value + g92).
-        cur = [machine[i] - origin[i] for i in range(2)]
-        ux, uy = rotate(cur[0], cur[1], -rot)
-        px = values.get(0, ux - st.g92[0]) + st.g92[0]
-        py = values.get(1, uy - st.g92[1]) + st.g92[1]
-        rx, ry = rotate(px, py, rot)
-        if 0 in values:
-            out[0] = machine[0] - rx
-        if 1 in values:
-            out[1] = machine[1] - ry
-    else:
-        for i in (0, 1):
-            if i in values:
-                out[i] = machine[i] - values[i] - st.g92[i]
-    for i in range(2, AXES):
-        if i in values:
-            out[i] = machine[i] - values[i] - st.g92[i]
-    return out
+    local = [machine[i] - origin[i] for i in range(AXES)]
+    if rot:
+        local[0], local[1] = rotate(local[0], local[1], -rot)
+    point = [values.get(i, local[i] - st.g92[i]) + st.g92[i] for i in range(AXES)]
+    if rot:
+        point[0], point[1] = rotate(point[0], point[1], rot)
+    changed = set(values)
+    if rot and changed & {0, 1}:
+        changed |= {0, 1}
+    return {i: machine[i] - point[i] for i in changed}
 
 
 # -- G92 / G52 ----------------------------------------------------------------------------------
