@@ -129,9 +129,17 @@ def g10(it: Interpreter, r: Resolved) -> None:
 def _g10_origin(it: Interpreter, r: Resolved, l_word: int) -> None:
     """G10 L2 P: set an origin; G10 L20 P: set it so the current point has the given coordinates."""
     st = it.state
-    p = r.w.get("p")
-    if p is None or p < 0 or p > 9 or p != int(p):
+    w = r.w
+    p = w.get("p")
+    if p is None or p < 0 or p >= 10:
         raise NgcSemanticError(f"P value out of range (0-9) with G10 L{l_word}")
+    if 0.0001 < p - int(p) < 0.5:
+        # rs274 takes P2.5 or P3.99 as system 2 or 3 but refuses P2.4.
+        raise NgcSemanticError("P value not an integer with G10")
+    if "i" in w or "j" in w:
+        raise NgcSemanticError(f"I J words not allowed with G10 L{l_word}")
+    if l_word == 20 and "r" in w:
+        raise NgcSemanticError("R not allowed in G10 L20")
     index = int(p) or st.coord_index
     base = G54_ORIGIN + COORD_STRIDE * (index - 1)
     numbered = it.params.numbered
