@@ -1,45 +1,14 @@
 """THE code table: every G and M code ngc knows, with its modal group and execution step.
 
 G codes are integers: the G number times ten (G38.2 -> 382, G0 -> 0), as LinuxCNC does, so no float is
-ever compared.  Modal groups follow overview.adoc, "Modal Groups"; steps follow its "G-code Order of
-Execution" list.  ``implemented`` marks codes whose handlers exist; the others are known to the
+ever compared.  Modal groups follow overview.adoc, "Modal Groups"; the order of execution is
+``Interpreter.convert`` (overview.adoc, "G-code Order of Execution").  ``implemented`` marks codes whose handlers exist; the others are known to the
 language (so a line using them reads fine) but rejected with a clear error when executed.
 """
 
 from __future__ import annotations
 
-from enum import IntEnum
 from typing import NamedTuple
-
-
-class Step(IntEnum):
-    """Execution steps of one block (overview.adoc, "G-code Order of Execution")."""
-
-    COMMENT = 1
-    FEED_MODE = 2
-    FEED_RATE = 3
-    SPINDLE_SPEED = 4
-    TOOL_SELECT = 5
-    IO = 6
-    TOOL_CHANGE = 7
-    SPINDLE = 8
-    STATE = 9
-    COOLANT = 10
-    OVERRIDES = 11
-    USER_M = 12
-    DWELL = 13
-    PLANE = 14
-    UNITS = 15
-    LATHE_MODE = 16
-    CUTTER_COMP = 17
-    TOOL_LENGTH = 18
-    COORD_SYSTEM = 19
-    CONTROL_MODE = 20
-    DISTANCE_MODE = 21
-    RETRACT_MODE = 22
-    NON_MODAL = 23
-    MOTION = 24
-    STOP = 25
 
 
 class Code(NamedTuple):
@@ -214,8 +183,9 @@ G_AXIS_USERS_NON_MODAL = frozenset({100, 280, 300, 520, 920})
 
 AXIS_LETTERS = "xyzabc"
 
-# The letters the standalone interpreter reads as words (u, v, w are not axes of its machine).
-WORD_LETTERS = frozenset("abcdefghijklmnpqrstxyz")
+# Polar coordinate words: distance @ and angle ^ in the XY plane (overview.adoc, "Polar
+# Coordinates").
+POLAR_LETTERS = "@^"
 
 
 def g_name(code: int) -> str:

@@ -204,7 +204,7 @@ class _Reader:
                 self.i = end + 1
             elif c == "#":
                 items.append(self.read_parameter_setting())
-            elif c in _LETTERS:
+            elif c in _LETTERS or c in "@^":
                 self.i += 1
                 items.append((WORD, c, self.read_value()))
             elif c == "o":

@@ -12,7 +12,7 @@ from ..errors import NgcSemanticError, NgcSyntaxError
 from . import codes
 
 INTEGER_LETTERS = frozenset("dhlt")
-_AXES = frozenset("xyzabc")
+_AXES = frozenset("xyzabc@^")
 # Letters that every block may carry without a code that uses them.
 _FREE = frozenset("xyzabcfs")
 # M codes 100..199 are user M codes, looked up as files (not available to the standalone machine).

@@ -41,10 +41,41 @@ def end_point(it: Interpreter, w: dict[str, float], machine: bool) -> list[float
         current = coordinates.to_machine(st, pos)
         target = [w.get(a, current[i]) for i, a in enumerate("xyzabc")]
         return coordinates.to_program(st, target)
+    if "@" in w or "^" in w:
+        return _polar_end(pos, w, st.absolute)
     if st.absolute:
         return [w.get("x", pos[0]), w.get("y", pos[1]), w.get("z", pos[2]),
                 w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
     return relative_end(pos, w)
+
+
+def _polar_end(pos: list[float], w: dict[str, float], absolute: bool) -> list[float]:
+    """@ distance and ^ angle (degrees) from the XY origin; in G91 both add to the current ones."""
+    for letter in "xy":
+        if letter in w:
+            raise NgcSemanticError(f"Cannot specify both polar coordinate and {letter.upper()} word")
+    at_origin = pos[0] == 0.0 and pos[1] == 0.0
+    radius = math.hypot(pos[0], pos[1])
+    angle = math.degrees(math.atan2(pos[1], pos[0]))
+    if absolute:
+        if "^" not in w and at_origin:
+            raise NgcSemanticError("Must specify angle in polar coordinate if at the origin")
+        radius = w.get("@", radius)
+        angle = w.get("^", angle)
+    else:
+        if at_origin:
+            raise NgcSemanticError(
+                "Incremental motion with polar coordinates is indeterminate when at the origin"
+            )
+        radius += w.get("@", 0.0)
+        angle += w.get("^", 0.0)
+    end = relative_end(pos, w) if not absolute else [
+        pos[0], pos[1], w.get("z", pos[2]), w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])
+    ]
+    t = math.radians(angle)
+    end[0] = radius * math.cos(t)
+    end[1] = radius * math.sin(t)
+    return end
 
 
 def relative_end(pos: list[float], w: dict[str, float]) -> list[float]:
