@@ -9,6 +9,7 @@ message LinuxCNC's interpreter gives for the same condition::
      ├── NgcSemanticError   the line reads fine but breaks a rule (modal clash, missing word, ...)
      ├── NgcRuntimeError    evaluation or execution failed (divide by zero, arc radius mismatch, ...)
      ├── NgcProgramError    the program as a whole is wrong (no program end, ABORT comment)
+     │    └── NgcOpenError  nothing to run: an empty file or an unreadable first line
      └── NgcConfigError     a tool table, parameter file, INI file or option is unusable
 
 :meth:`NgcError.render` draws the source line with a caret under the column.
@@ -83,6 +84,10 @@ class NgcRuntimeError(NgcError):
 
 class NgcProgramError(NgcError):
     """The program as a whole is wrong: no end, an ABORT comment, ..."""
+
+
+class NgcOpenError(NgcProgramError):
+    """The program cannot be started: it is empty or its first line cannot be read."""
 
 
 class NgcConfigError(NgcError):

@@ -15,7 +15,7 @@ from typing import TextIO
 
 from .canon import ops
 from .canon.text import TextSink
-from .errors import NgcError
+from .errors import NgcError, NgcOpenError
 from .interp.interpreter import Interpreter
 
 USAGE = (
@@ -121,11 +121,15 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
     sink = TextSink(out)
     interp = Interpreter(sink, block_delete=o.block_delete)
     interp.startup()
-    interp.emit(ops.OnReset())
     failed = False
     with handle:
         try:
-            interp.run(_lines(handle), file=o.program)
+            interp.run(_lines(handle), file=o.program, on_open=lambda: interp.emit(ops.OnReset()))
+        except NgcOpenError as exc:
+            # rs274 could not open the program: it reports and exits without resetting.
+            sink.flush()
+            report(err, exc)
+            return 1
         except NgcError as exc:
             failed = True
             sink.flush()

@@ -7,11 +7,11 @@ Canonical operations go to the sink the interpreter is given.  All state lives o
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING
 
 from ..canon import ops
-from ..errors import NgcError, NgcProgramError, NgcSemanticError
+from ..errors import NgcError, NgcOpenError, NgcProgramError, NgcSemanticError, NgcSyntaxError
 from ..language import codes
 from ..language.parser import Block, n_label, parse_line, split_plain, words_of
 from ..language.words import Words
@@ -25,6 +25,14 @@ if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
 
 _new = tuple.__new__
+# rs274 reads lines into a 256-byte buffer: a line of 253 characters or more is refused.
+MAX_LINE = 252
+
+
+def _too_long_echo(raw: str) -> str:
+    """What rs274 echoes of a line that is too long: what its buffer held."""
+    return raw[:254] if len(raw) > MAX_LINE + 1 else raw + "\n"
+
 _AXES = frozenset("xyzabc")
 # Lines of only these letters and a motion code (or none) take the fast path.
 _PLAIN_LETTERS = frozenset("xyzabcfs")
@@ -61,10 +69,17 @@ class Interpreter:
         self.emit(ops.SetXYRotation(st.rotation))
         self.emit(ops.SetFeedReference("CANON_XYZ"))
 
-    def run(self, lines: Iterable[str], file: str | None = None) -> None:
+    def run(
+        self,
+        lines: Iterable[str],
+        file: str | None = None,
+        on_open: Callable[[], None] | None = None,
+    ) -> None:
         """Execute a program line by line until M2/M30, the closing ``%`` or an error.
 
-        Raises :class:`NgcError` (with file and line) on the first error.
+        The program is "open" once its first non-blank line is read (``on_open`` is called then);
+        an empty program raises :class:`NgcOpenError`.  Raises :class:`NgcError` (with file and
+        line) on the first error.
         """
         self.file = file
         self.ended = False
@@ -73,11 +88,20 @@ class Interpreter:
         last_no, last_text = 0, ""
         plain = self.execute_plain
         for number, raw in enumerate(lines, 1):
+            if "\x00" in raw:
+                raw = raw[: raw.index("\x00")]  # rs274 reads a line as a C string
             last_no, last_text = number, raw
+            if len(raw) > MAX_LINE:
+                error = NgcSyntaxError("Command too long", file=file, line=number,
+                                       source=_too_long_echo(raw))
+                raise NgcOpenError(error.message, file=file, line=number,
+                                   source=error.source) if not started else error
             if not started:
                 if not raw.strip():
                     continue
                 started = True
+                if on_open is not None:
+                    on_open()
                 if raw.strip() == "%":
                     percent = True
                     continue
@@ -88,7 +112,13 @@ class Interpreter:
             if not plain(raw, number):
                 self.execute_line(raw, number)
             if self.ended:
+                if percent:
+                    self.label = "N..... "
+                    self.emit(ops.Comment("interpreter: percent sign missing from end of file"))
                 return
+        if not started:
+            raise NgcOpenError("File ended with no percent sign", file=file, line=last_no,
+                               source=last_text.rstrip())
         message = "File ended with no percent sign" if percent else (
             "File ended with no percent sign or program end"
         )

@@ -10,6 +10,12 @@ from __future__ import annotations
 from ..errors import NgcSyntaxError
 
 _WHITESPACE_TABLE = str.maketrans("", "", " \t\r\n")
+# rs274 lower-cases ASCII letters only (C tolower); other bytes pass through.
+_ASCII_LOWER = str.maketrans("ABCDEFGHIJKLMNOPQRSTUVWXYZ", "abcdefghijklmnopqrstuvwxyz")
+
+
+def _lower(text: str) -> str:
+    return text.lower() if text.isascii() else text.translate(_ASCII_LOWER)
 
 
 def normalize(raw: str) -> str:
@@ -17,7 +23,7 @@ def normalize(raw: str) -> str:
     if "(" not in raw and ";" not in raw:
         if "\t" in raw or "\r" in raw:
             raw = raw.translate(_WHITESPACE_TABLE)
-        return raw.replace(" ", "").lower()
+        return _lower(raw.replace(" ", ""))
     out: list[str] = []
     i = 0
     n = len(raw)
@@ -36,6 +42,6 @@ def normalize(raw: str) -> str:
         if c == ";":
             break
         if c not in " \t\r\n":
-            out.append(c.lower())
+            out.append(_lower(c))
         i += 1
     return "".join(out)
