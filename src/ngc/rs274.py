@@ -9,8 +9,8 @@ from __future__ import annotations
 import getopt
 import io
 import sys
-from dataclasses import dataclass
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import TextIO
 
 from .canon import ops
@@ -113,7 +113,7 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
         return 1
     try:
         # Bytes in, bytes out: rs274 reads a program as bytes (latin-1 maps each byte to one char).
-        handle = open(o.program, encoding="latin-1", newline="")
+        handle = open(o.program, encoding="latin-1", newline="")  # noqa: SIM115 (closed below)
     except OSError as exc:
         err.write(f"executing\nUnable to open file {o.program}: {exc.strerror}\n")
         return 1

@@ -102,9 +102,9 @@ def run_case(cmd: list[str], prog: Path, timeout_s: float) -> dict[str, bytes]:
         home.mkdir()
         shutil.copy2(prog, work / prog.name)
         try:
-            proc = subprocess.run(cmd + ["-g", prog.name], cwd=work, env=child_env(home),
-                                  stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                  stderr=subprocess.PIPE, timeout=timeout_s)
+            proc = subprocess.run([*cmd, "-g", prog.name], cwd=work, env=child_env(home),
+                                  stdin=subprocess.DEVNULL, capture_output=True,
+                                  timeout=timeout_s)
         except OSError as exc:
             raise StartError(f"cannot start {cmd[0]!r}: {exc}") from exc
     return {

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 from typing import TextIO
 
-from .ops import Op
+from .ops import Op, op_name
 
 
 class JsonSink:
@@ -18,7 +18,7 @@ class JsonSink:
 
     def emit(self, op: Op, label: str, line: int) -> None:
         n = label[1:].strip()
-        record: dict[str, object] = {"op": op.TEXT.split("(", 1)[0], "line": line}
+        record: dict[str, object] = {"op": op_name(op), "line": line}
         record["n"] = int(n) if n.isdigit() else None
         record.update(op._asdict())
         self._write(json.dumps(record) + "\n")

@@ -2,21 +2,24 @@
 
 The interpreter describes what the machine does as a stream of these operations, LinuxCNC's
 "canonical machining functions" (rs274ngc.adoc).  Each operation is an immutable tuple whose fields
-are exactly the arguments rs274 prints, and whose ``TEXT`` is the printf template rs274 uses, so the
-text sink is one ``%`` per operation.  Lengths are in the program's current units, angles in degrees.
+are exactly the arguments rs274 prints; ``TEMPLATES`` gives the printf template rs274 prints each
+with, so the text sink is one ``%`` per operation.  Lengths are in the program's current units,
+angles in degrees.
 """
 
 from __future__ import annotations
 
-from typing import ClassVar, NamedTuple, Protocol
+from collections.abc import Iterator, Mapping
+from types import MappingProxyType
+from typing import Any, NamedTuple, Protocol
 
 
 class Op(Protocol):
-    """What every canonical operation offers."""
+    """What every canonical operation offers (each is a NamedTuple)."""
 
-    TEXT: ClassVar[str]
+    def _asdict(self) -> dict[str, Any]: ...
 
-    def _asdict(self) -> dict[str, object]: ...
+    def __iter__(self) -> Iterator[Any]: ...
 
 
 class Sink(Protocol):
@@ -36,7 +39,6 @@ class StraightTraverse(NamedTuple):
     a: float
     b: float
     c: float
-    TEXT = "STRAIGHT_TRAVERSE(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)"
 
 
 class StraightFeed(NamedTuple):
@@ -46,7 +48,6 @@ class StraightFeed(NamedTuple):
     a: float
     b: float
     c: float
-    TEXT = "STRAIGHT_FEED(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)"
 
 
 class ArcFeed(NamedTuple):
@@ -59,66 +60,55 @@ class ArcFeed(NamedTuple):
     a: float
     b: float
     c: float
-    TEXT = "ARC_FEED(%.4f, %.4f, %.4f, %.4f, %d, %.4f, %.4f, %.4f, %.4f)"
 
 
 class Dwell(NamedTuple):
     seconds: float
-    TEXT = "DWELL(%.4f)"
 
 
 # -- modes ----------------------------------------------------------------------------------------
 class UseLengthUnits(NamedTuple):
     units: str  # CANON_UNITS_MM | CANON_UNITS_INCHES
-    TEXT = "USE_LENGTH_UNITS(%s)"
 
 
 class SelectPlane(NamedTuple):
     plane: str  # CANON_PLANE_XY | _XZ | _YZ | _UNKNOWN
-    TEXT = "SELECT_PLANE(%s)"
 
 
 class SetFeedRate(NamedTuple):
     rate: float
-    TEXT = "SET_FEED_RATE(%.4f)"
 
 
 class SetFeedMode(NamedTuple):
     spindle: int
     mode: int  # 0 units/minute or inverse time, 1 units/revolution
-    TEXT = "SET_FEED_MODE(%d, %d)"
 
 
 class SetFeedReference(NamedTuple):
     reference: str
-    TEXT = "SET_FEED_REFERENCE(%s)"
 
 
 class SetMotionControlMode(NamedTuple):
     mode: str  # CANON_EXACT_STOP | CANON_EXACT_PATH
-    TEXT = "SET_MOTION_CONTROL_MODE(%s)"
 
 
 class SetMotionControlContinuous(NamedTuple):
     tolerance: float
-    TEXT = "SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, %f)"
 
 
 class SetNaivecamTolerance(NamedTuple):
     tolerance: float
-    TEXT = "SET_NAIVECAM_TOLERANCE(%.4f)"
 
 
 # -- offsets --------------------------------------------------------------------------------------
 class SetG5xOffset(NamedTuple):
-    index: int
+    system: int
     x: float
     y: float
     z: float
     a: float
     b: float
     c: float
-    TEXT = "SET_G5X_OFFSET(%d, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f)"
 
 
 class SetG92Offset(NamedTuple):
@@ -128,123 +118,164 @@ class SetG92Offset(NamedTuple):
     a: float
     b: float
     c: float
-    TEXT = "SET_G92_OFFSET(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)"
 
 
 class SetXYRotation(NamedTuple):
     degrees: float
-    TEXT = "SET_XY_ROTATION(%.4f)"
 
 
 # -- spindle and coolant --------------------------------------------------------------------------
 class SetSpindleSpeed(NamedTuple):
     spindle: int
     rpm: float
-    TEXT = "SET_SPINDLE_SPEED(%d, %.4f)"
 
 
 class StartSpindleClockwise(NamedTuple):
     spindle: int
-    TEXT = "START_SPINDLE_CLOCKWISE(%d)"
 
 
 class StartSpindleCounterclockwise(NamedTuple):
     spindle: int
-    TEXT = "START_SPINDLE_COUNTERCLOCKWISE(%d)"
 
 
 class StopSpindleTurning(NamedTuple):
     spindle: int
-    TEXT = "STOP_SPINDLE_TURNING(%d)"
 
 
 class SetSpindleMode(NamedTuple):
     spindle: int
     css_max: float
-    TEXT = "SET_SPINDLE_MODE(%d %.4f)"
 
 
 class MistOn(NamedTuple):
-    TEXT = "MIST_ON()"
+    """No arguments."""
 
 
 class MistOff(NamedTuple):
-    TEXT = "MIST_OFF()"
+    """No arguments."""
 
 
 class FloodOn(NamedTuple):
-    TEXT = "FLOOD_ON()"
+    """No arguments."""
 
 
 class FloodOff(NamedTuple):
-    TEXT = "FLOOD_OFF()"
+    """No arguments."""
 
 
 # -- overrides ------------------------------------------------------------------------------------
 class EnableFeedOverride(NamedTuple):
-    TEXT = "ENABLE_FEED_OVERRIDE()"
+    """No arguments."""
 
 
 class DisableFeedOverride(NamedTuple):
-    TEXT = "DISABLE_FEED_OVERRIDE()"
+    """No arguments."""
 
 
 class EnableSpeedOverride(NamedTuple):
     spindle: int
-    TEXT = "ENABLE_SPEED_OVERRIDE(%d)"
 
 
 class DisableSpeedOverride(NamedTuple):
     spindle: int
-    TEXT = "DISABLE_SPEED_OVERRIDE(%d)"
 
 
 class EnableAdaptiveFeed(NamedTuple):
-    TEXT = "ENABLE_ADAPTIVE_FEED()"
+    """No arguments."""
 
 
 class DisableAdaptiveFeed(NamedTuple):
-    TEXT = "DISABLE_ADAPTIVE_FEED()"
+    """No arguments."""
 
 
 class EnableFeedHold(NamedTuple):
-    TEXT = "ENABLE_FEED_HOLD()"
+    """No arguments."""
 
 
 class DisableFeedHold(NamedTuple):
-    TEXT = "DISABLE_FEED_HOLD()"
+    """No arguments."""
 
 
 # -- program --------------------------------------------------------------------------------------
 class Comment(NamedTuple):
     text: str
-    TEXT = 'COMMENT("%s")'
 
 
 class Message(NamedTuple):
     text: str
-    TEXT = 'MESSAGE("%s")'
 
 
 class ProgramStop(NamedTuple):
-    TEXT = "PROGRAM_STOP()"
+    """No arguments."""
 
 
 class OptionalProgramStop(NamedTuple):
-    TEXT = "OPTIONAL_PROGRAM_STOP()"
+    """No arguments."""
 
 
 class PalletShuttle(NamedTuple):
-    TEXT = "PALLET_SHUTTLE()"
+    """No arguments."""
 
 
 class ProgramEnd(NamedTuple):
-    TEXT = "PROGRAM_END()"
+    """No arguments."""
 
 
 class Finish(NamedTuple):
-    TEXT = "FINISH()"
+    """No arguments."""
 
 
 class OnReset(NamedTuple):
-    TEXT = "ON_RESET()"
+    """No arguments."""
+
+
+# How rs274 prints each operation (C printf templates).
+TEMPLATES: Mapping[type, str] = MappingProxyType(
+    {
+        StraightTraverse: "STRAIGHT_TRAVERSE(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
+        StraightFeed: "STRAIGHT_FEED(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
+        ArcFeed: "ARC_FEED(%.4f, %.4f, %.4f, %.4f, %d, %.4f, %.4f, %.4f, %.4f)",
+        Dwell: "DWELL(%.4f)",
+        UseLengthUnits: "USE_LENGTH_UNITS(%s)",
+        SelectPlane: "SELECT_PLANE(%s)",
+        SetFeedRate: "SET_FEED_RATE(%.4f)",
+        SetFeedMode: "SET_FEED_MODE(%d, %d)",
+        SetFeedReference: "SET_FEED_REFERENCE(%s)",
+        SetMotionControlMode: "SET_MOTION_CONTROL_MODE(%s)",
+        SetMotionControlContinuous: "SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, %f)",
+        SetNaivecamTolerance: "SET_NAIVECAM_TOLERANCE(%.4f)",
+        SetG5xOffset: "SET_G5X_OFFSET(%d, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
+        SetG92Offset: "SET_G92_OFFSET(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
+        SetXYRotation: "SET_XY_ROTATION(%.4f)",
+        SetSpindleSpeed: "SET_SPINDLE_SPEED(%d, %.4f)",
+        StartSpindleClockwise: "START_SPINDLE_CLOCKWISE(%d)",
+        StartSpindleCounterclockwise: "START_SPINDLE_COUNTERCLOCKWISE(%d)",
+        StopSpindleTurning: "STOP_SPINDLE_TURNING(%d)",
+        SetSpindleMode: "SET_SPINDLE_MODE(%d %.4f)",
+        MistOn: "MIST_ON()",
+        MistOff: "MIST_OFF()",
+        FloodOn: "FLOOD_ON()",
+        FloodOff: "FLOOD_OFF()",
+        EnableFeedOverride: "ENABLE_FEED_OVERRIDE()",
+        DisableFeedOverride: "DISABLE_FEED_OVERRIDE()",
+        EnableSpeedOverride: "ENABLE_SPEED_OVERRIDE(%d)",
+        DisableSpeedOverride: "DISABLE_SPEED_OVERRIDE(%d)",
+        EnableAdaptiveFeed: "ENABLE_ADAPTIVE_FEED()",
+        DisableAdaptiveFeed: "DISABLE_ADAPTIVE_FEED()",
+        EnableFeedHold: "ENABLE_FEED_HOLD()",
+        DisableFeedHold: "DISABLE_FEED_HOLD()",
+        Comment: 'COMMENT("%s")',
+        Message: 'MESSAGE("%s")',
+        ProgramStop: "PROGRAM_STOP()",
+        OptionalProgramStop: "OPTIONAL_PROGRAM_STOP()",
+        PalletShuttle: "PALLET_SHUTTLE()",
+        ProgramEnd: "PROGRAM_END()",
+        Finish: "FINISH()",
+        OnReset: "ON_RESET()",
+    }
+)
+
+
+def op_name(op: Op) -> str:
+    """The canonical call's name, e.g. ``STRAIGHT_FEED``."""
+    return TEMPLATES[type(op)].split("(", 1)[0]

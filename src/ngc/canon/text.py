@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import TextIO
 
-from .ops import Op
+from .ops import TEMPLATES, Op
 
 
 class TextSink:
@@ -31,7 +31,7 @@ class TextSink:
         cls = type(op)
         template = self._templates.get(cls)
         if template is None:
-            template = self._templates[cls] = "%5d %s" + op.TEXT + "\n"
+            template = self._templates[cls] = "%5d %s" + TEMPLATES[cls] + "\n"
         lines = self._lines
         lines.append(template % (self._count, label, *op))
         if len(lines) >= self.BATCH:

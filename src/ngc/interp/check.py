@@ -23,7 +23,6 @@ _P_MSG = (
 def check(st: State, r: Resolved) -> None:
     """Raise the first rule ``r`` breaks, in rs274's order."""
     g = r.g
-    w = r.w
     non_modal = g.get(codes.G_NON_MODAL)
     motion = g.get(codes.G_MOTION)
     if non_modal == 530:

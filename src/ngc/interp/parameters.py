@@ -3,7 +3,7 @@
 Numbered parameters live in one array; lengths stored by the interpreter in system parameters
 (offsets, G28/G30 positions) are in inches, rs274's user units, whatever the program units.
 Named parameters are local (``#<name>``, per call frame) or global (``#<_name>``).  The predefined
-read-only names (``#<_x>``, ``#<_metric>``, ...) and the position parameters 5420–5428 are computed
+read-only names (``#<_x>``, ``#<_metric>``, ...) and the position parameters 5420-5428 are computed
 from the interpreter state when read.
 """
 

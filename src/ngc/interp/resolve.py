@@ -44,7 +44,7 @@ def _param(r: Words, key: object, value: object, params: Parameters) -> None:
         target = check_index(key(params))  # type: ignore[operator]
         check_number_writable(target)
     v = value if type(value) is float else value(params)  # type: ignore[operator]
-    r.assigns.append((target, v))  # type: ignore[arg-type]
+    r.assigns.append((target, v))
 
 
 __all__ = ["ParamContext", "Resolved", "resolve"]

@@ -2,8 +2,9 @@
 
 G codes are integers: the G number times ten (G38.2 -> 382, G0 -> 0), as LinuxCNC does, so no float is
 ever compared.  Modal groups follow overview.adoc, "Modal Groups"; the order of execution is
-``Interpreter.convert`` (overview.adoc, "G-code Order of Execution").  ``implemented`` marks codes whose handlers exist; the others are known to the
-language (so a line using them reads fine) but rejected with a clear error when executed.
+``Interpreter.convert`` (overview.adoc, "G-code Order of Execution").  ``implemented`` marks codes
+whose handlers exist; the others are known to the language (so a line using them reads fine) but
+rejected with a clear error when executed.
 """
 
 from __future__ import annotations

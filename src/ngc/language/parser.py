@@ -13,7 +13,6 @@ import re
 from ..errors import NgcError, NgcSyntaxError
 from . import expressions as ex
 from .lexer import normalize
-from .words import INTEGER_LETTERS as _INTEGER_LETTERS
 from .words import Words, add_word, integer_value
 
 WORD = 0
@@ -83,7 +82,7 @@ def parse_line(raw: str, line: int = 0) -> Block:
     except NgcError as err:
         if err.column is not None:
             err.column = raw_column(raw, err.column - 1)
-        raise err.locate(file=None, line=line, source=source)
+        raise err.locate(file=None, line=line, source=source) from None
     return block
 
 
@@ -119,7 +118,7 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
         del parts[1:3]
     letters = parts[1::2]
     try:
-        w = dict(zip(letters, map(float, parts[2::2])))
+        w = dict(zip(letters, map(float, parts[2::2]), strict=True))
     except ValueError:
         return None
     if len(w) != len(letters) or not _FAST_LETTERS.issuperset(w):

@@ -1,4 +1,4 @@
-"""Coordinate systems and offsets: G54–G59.3, G10 L2/L20, G52, G92/G92.1/G92.2/G92.3, G28/G30
+"""Coordinate systems and offsets: G54-G59.3, G10 L2/L20, G52, G92/G92.1/G92.2/G92.3, G28/G30
 and their .1 forms, and the program <-> machine conversions G53 needs (coordinates.adoc).
 
 The canon is told offsets and rotation (SET_G5X_OFFSET, SET_G92_OFFSET, SET_XY_ROTATION) and is

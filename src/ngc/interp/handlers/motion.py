@@ -1,5 +1,5 @@
 """Motion: G0, G1, G2, G3 (center and radius formats, full circles, P turns, helices, all planes),
-G53 machine-coordinate moves and inverse-time feed (g-code.adoc, G0–G3, G53, G93).
+G53 machine-coordinate moves and inverse-time feed (g-code.adoc, G0-G3, G53, G93).
 
 Tolerances are LinuxCNC's, as rs274 shows them: a center-format arc may spiral if the end radius
 differs from the start radius by at most ``CENTER_ARC_TOLERANCE`` or by at most 0.1 %, and never
@@ -17,7 +17,6 @@ from . import coordinates
 
 if TYPE_CHECKING:
     from ..interpreter import Interpreter
-    from ..resolve import Resolved
 
 CENTER_ARC_TOLERANCE_INCH = 2 * 0.001 * math.sqrt(2.0)
 CENTER_ARC_TOLERANCE_MM = 2 * 0.01 * math.sqrt(2.0)
