@@ -151,11 +151,9 @@ def run_canon(options: argparse.Namespace) -> int:
 
 
 def _flush(sink: Sink) -> None:
-    """Sinks that batch their writes (the text sink) have a ``flush``; then stdout is flushed,
-    so that the operations before an error come out before the error."""
-    flush = getattr(sink, "flush", None)
-    if flush is not None:
-        flush()
+    """Write what the sink holds back, then stdout, so that the operations before an error come
+    out before the error."""
+    sink.flush()
     sys.stdout.flush()
 
 

@@ -26,6 +26,9 @@ class JsonSink:
     def print_text(self, text: str) -> None:
         self._write(json.dumps({"op": "PRINT", "text": text}) + "\n")
 
+    def flush(self) -> None:
+        """Nothing is held back."""
+
 
 class ListSink:
     """Collects ``(op, label, line)`` in memory (tests, library users)."""
@@ -41,3 +44,6 @@ class ListSink:
 
     def print_text(self, text: str) -> None:
         self.printed.append(text)
+
+    def flush(self) -> None:
+        """Nothing is held back."""

@@ -30,6 +30,8 @@ class Sink(Protocol):
 
     def print_text(self, text: str) -> None: ...
 
+    def flush(self) -> None: ...
+
 
 # -- motion ---------------------------------------------------------------------------------------
 class StraightTraverse(NamedTuple):

@@ -252,7 +252,10 @@ class Interpreter:
             if group in m:
                 raise NgcSemanticError(f"M{m[group]} is not supported yet")
         if codes.M_SPINDLE in m:
-            modes.spindle(self, m[codes.M_SPINDLE])
+            code = m[codes.M_SPINDLE]
+            if not codes.M_CODES[code].implemented:
+                raise NgcSemanticError(f"M{code} is not supported yet")
+            modes.spindle(self, code)
         if codes.M_COOLANT in m:
             modes.coolant(self, m[codes.M_COOLANT])
         if codes.M_OVERRIDE in m:
@@ -265,7 +268,7 @@ class Interpreter:
             modes.plane(self, g[codes.G_PLANE])
         if codes.G_UNITS in g:
             modes.units(self, g[codes.G_UNITS])
-        for group in (codes.G_LATHE, codes.G_CUTTER_COMP, codes.G_TOOL_LENGTH):
+        for group in (codes.G_LATHE, codes.G_CUTTER_COMP, codes.G_TOOL_LENGTH, codes.G_SPINDLE_MODE):
             code = g.get(group)
             if code is not None and not codes.G_CODES[code].implemented:
                 raise NgcSemanticError(f"{codes.g_name(code)} is not supported yet")
