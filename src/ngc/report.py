@@ -121,6 +121,9 @@ class Summarizer:
     def print_text(self, text: str) -> None:
         """``(PRINT,...)`` output does not move the machine."""
 
+    def flush(self) -> None:
+        """Nothing is held back."""
+
     def add(self, op: Op) -> None:
         """Follow one canonical operation."""
         handler = self._handlers.get(type(op))
