@@ -9,7 +9,6 @@ from __future__ import annotations
 import getopt
 import io
 import sys
-from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TextIO
 
@@ -124,7 +123,7 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
     failed = False
     with handle:
         try:
-            interp.run(_lines(handle), file=o.program, on_open=lambda: interp.emit(ops.OnReset()))
+            interp.run(handle, file=o.program, on_open=lambda: interp.emit(ops.OnReset()))
         except NgcOpenError as exc:
             # rs274 could not open the program: it reports and exits without resetting.
             sink.flush()
@@ -140,11 +139,6 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
     interp.emit(ops.OnReset())
     sink.flush()
     return 1 if failed else 0
-
-
-def _lines(handle: TextIO) -> Iterator[str]:
-    for line in handle:
-        yield line[:-1] if line.endswith("\n") else line
 
 
 def report(err: TextIO, exc: NgcError) -> None:

@@ -18,7 +18,7 @@ class TextSink:
 
     __slots__ = ("_count", "_lines", "_stream", "_templates")
 
-    BATCH = 4096
+    BATCH_MASK = 4095  # write every 4096 operations
 
     def __init__(self, stream: TextIO) -> None:
         self._stream = stream
@@ -27,14 +27,13 @@ class TextSink:
         self._templates: dict[type, str] = {}
 
     def emit(self, op: Op, label: str, line: int) -> None:
-        self._count += 1
-        cls = type(op)
-        template = self._templates.get(cls)
-        if template is None:
-            template = self._templates[cls] = "%5d %s" + TEMPLATES[cls] + "\n"
-        lines = self._lines
-        lines.append(template % (self._count, label, *op))
-        if len(lines) >= self.BATCH:
+        count = self._count = self._count + 1
+        try:
+            template = self._templates[type(op)]
+        except KeyError:
+            template = self._templates[type(op)] = "%5d %s" + TEMPLATES[type(op)] + "\n"
+        self._lines.append(template % (count, label, *op))
+        if not count & self.BATCH_MASK:
             self.flush()
 
     def print_text(self, text: str) -> None:

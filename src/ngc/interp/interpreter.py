@@ -88,6 +88,7 @@ class Interpreter:
         last_no, last_text = 0, ""
         plain = self.execute_plain
         for number, raw in enumerate(lines, 1):
+            raw = raw.rstrip("\n")
             if "\x00" in raw:
                 raw = raw[: raw.index("\x00")]  # rs274 reads a line as a C string
             last_no, last_text = number, raw

@@ -200,23 +200,33 @@ def _ijk_center(
         c1, c2 = s1 + o1, s2 + o2
     r1 = math.hypot(s1 - c1, s2 - c2)
     r2 = math.hypot(e1 - c1, e2 - c2)
+    zero = RADIUS_TOLERANCE_MM if it.state.metric else RADIUS_TOLERANCE_INCH
+    if r1 < zero or r2 < zero:
+        where = _arc_where(labels, s1, s2, c1, c2, e1, e2, r1, r2)
+        raise NgcSemanticError(f"Zero-radius arc: {where}")
+    abs_err = abs(r1 - r2)
+    tol = CENTER_ARC_TOLERANCE_MM if it.state.metric else CENTER_ARC_TOLERANCE_INCH
+    if abs_err > tol:
+        rel_err = abs_err / max(r1, r2)
+        if abs_err > 100 * tol or rel_err > CENTER_ARC_RELATIVE_TOLERANCE:
+            where = _arc_where(labels, s1, s2, c1, c2, e1, e2, r1, r2)
+            raise NgcSemanticError(
+                "Radius to end of arc differs from radius to start: "
+                f"{where} abs_err={abs_err:.4g} rel_err={rel_err * 100:.4f}%"
+            )
+    return c1, c2
+
+
+def _arc_where(
+    labels: str, s1: float, s2: float, c1: float, c2: float, e1: float, e2: float,
+    r1: float, r2: float,
+) -> str:
+    """The arc's points as rs274's arc errors show them."""
     a, b = labels[0], labels[1]
-    where = (
+    return (
         f"start=({a}{s1:.4f},{b}{s2:.4f}) center=({a}{c1:.4f},{b}{c2:.4f}) "
         f"end=({a}{e1:.4f},{b}{e2:.4f}) r1={r1:.4f} r2={r2:.4f}"
     )
-    zero = RADIUS_TOLERANCE_MM if it.state.metric else RADIUS_TOLERANCE_INCH
-    if r1 < zero or r2 < zero:
-        raise NgcSemanticError(f"Zero-radius arc: {where}")
-    abs_err = abs(r1 - r2)
-    rel_err = abs_err / max(r1, r2)
-    tol = CENTER_ARC_TOLERANCE_MM if it.state.metric else CENTER_ARC_TOLERANCE_INCH
-    if abs_err > 100 * tol or (abs_err > tol and rel_err > CENTER_ARC_RELATIVE_TOLERANCE):
-        raise NgcSemanticError(
-            "Radius to end of arc differs from radius to start: "
-            f"{where} abs_err={abs_err:.4g} rel_err={rel_err * 100:.4f}%"
-        )
-    return c1, c2
 
 
 def _radius_center(
