@@ -126,20 +126,21 @@ class Interpreter:
         raise NgcProgramError(message, file=file, line=last_no, source=last_text.rstrip())
 
     def execute_plain(self, raw: str, number: int) -> bool:
-        """Execute ``raw`` if it is a line of plain words (see :func:`split_plain`); else False."""
-        if "(" in raw or ";" in raw or "/" in raw or "\t" in raw or "\r" in raw:
-            return False
+        """Execute ``raw`` if it is a line of plain words (see :func:`split_plain`); else False.
+
+        Comments, ``;``, ``/`` and other characters fail :func:`split_plain`'s number reading.
+        """
         try:
             found = split_plain(raw.replace(" ", "").lower())
             if found is None:
-                return False
+                return self.execute_comment_line(raw, number)
             w, g, digits = found
             code = None if g is None else _MOTION_BY_VALUE.get(g)
             if (g is None or code is not None) and (
                 _PLAIN_LETTERS.issuperset(w)
                 or (code in _ARCS and _ARC_LETTERS.issuperset(w))
             ):
-                self.label = n_label(digits) if digits is not None else "N..... "
+                self.label = "N..... " if digits is None else n_label(digits)
                 self.line = self.state.line = number
                 self.convert_plain(w, code)
                 return True
@@ -152,6 +153,18 @@ class Interpreter:
             return True
         except NgcError as err:
             raise err.locate(file=self.file, line=number, source=raw.rstrip()) from None
+
+    def execute_comment_line(self, raw: str, number: int) -> bool:
+        """Execute ``raw`` if it holds nothing but one ``( ... )`` comment; else False."""
+        text = raw.strip(" \t\r")
+        if not (text[:1] == "(" and text[-1:] == ")" and text.count("(") == 1):
+            return False
+        if text.count(")") != 1 or not text.isascii():
+            return False
+        self.label = "N..... "
+        self.line = self.state.line = number
+        program.comment(self, text)
+        return True
 
     def execute_line(self, raw: str, number: int) -> None:
         try:
@@ -186,11 +199,16 @@ class Interpreter:
 
         Same checks and order as :meth:`convert` for such a block, without the general dispatch.
         """
+        st = self.state
         if "f" in w:
-            modes.feed_rate(self, w["f"])
+            f = w["f"]
+            if f >= 0.0 and st.feed_mode == 940:
+                st.feed = f
+                self.sink.emit(_new(ops.SetFeedRate, (f,)), self.label, self.line)
+            else:
+                modes.feed_rate(self, f)
         if "s" in w:
             modes.spindle_speed(self, w["s"])
-        st = self.state
         has_axes = not _AXES.isdisjoint(w)
         if code is None:
             if not has_axes:
@@ -223,9 +241,12 @@ class Interpreter:
             end = motion.relative_end(st.pos, w)
         if code == 0:
             self.sink.emit(_new(ops.StraightTraverse, end), self.label, self.line)
-            st.pos = end
+        elif st.feed_mode == 940 and st.feed != 0.0:
+            self.sink.emit(_new(ops.StraightFeed, end), self.label, self.line)
         else:
             motion.feed(self, w, end)
+            return
+        st.pos = end
 
     def convert(self, r: Resolved) -> None:
         """Execute a checked block in the order of overview.adoc, "G-code Order of Execution"."""

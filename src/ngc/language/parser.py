@@ -110,7 +110,7 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
     if parts[0] or not text.isascii() or "_" in text:
         return None
     digits = None
-    if len(parts) > 1 and parts[1] == "n":
+    if text.startswith("n"):
         m = _LINE_NUMBER.fullmatch(parts[2])
         if m is None:
             return None
