@@ -83,30 +83,28 @@ class Interpreter:
         """
         self.file = file
         self.ended = False
-        percent = False
-        started = False
-        last_no, last_text = 0, ""
+        numbered = enumerate(lines, 1)
+        number, raw = 0, ""
+        for number, raw in numbered:
+            raw = self._checked(raw, number, opening=True)
+            if raw.strip():
+                break
+        else:
+            raise NgcOpenError("File ended with no percent sign", file=file, line=number,
+                               source=raw.rstrip("\r\n"))
+        if on_open is not None:
+            on_open()
+        percent = raw.strip() == "%"
+        if not percent:
+            self._execute_raw(raw, number)
+        if self.ended:
+            return
         plain = self.execute_plain
-        for number, raw in enumerate(lines, 1):
+        for number, raw in numbered:
             raw = raw.rstrip("\n")
-            if "\x00" in raw:
-                raw = raw[: raw.index("\x00")]  # rs274 reads a line as a C string
-            last_no, last_text = number, raw
-            if len(raw) > MAX_LINE:
-                error = NgcSyntaxError("Command too long", file=file, line=number,
-                                       source=_too_long_echo(raw))
-                raise NgcOpenError(error.message, file=file, line=number,
-                                   source=error.source) if not started else error
-            if not started:
-                if not raw.strip():
-                    continue
-                started = True
-                if on_open is not None:
-                    on_open()
-                if raw.strip() == "%":
-                    percent = True
-                    continue
-            elif percent and raw.strip() == "%":
+            if "\x00" in raw or len(raw) > MAX_LINE:
+                raw = self._checked(raw, number, opening=False)
+            if percent and raw.strip() == "%":
                 self.label = "N..... "
                 self.emit(ops.Finish())
                 return
@@ -117,13 +115,24 @@ class Interpreter:
                     self.label = "N..... "
                     self.emit(ops.Comment("interpreter: percent sign missing from end of file"))
                 return
-        if not started:
-            raise NgcOpenError("File ended with no percent sign", file=file, line=last_no,
-                               source=last_text.rstrip())
         message = "File ended with no percent sign" if percent else (
             "File ended with no percent sign or program end"
         )
-        raise NgcProgramError(message, file=file, line=last_no, source=last_text.rstrip())
+        raise NgcProgramError(message, file=file, line=number, source=raw.rstrip())
+
+    def _checked(self, raw: str, number: int, opening: bool) -> str:
+        """A line as rs274 reads it: up to a NUL byte, refused when too long."""
+        raw = raw.rstrip("\n")
+        if "\x00" in raw:
+            raw = raw[: raw.index("\x00")]  # rs274 reads a line as a C string
+        if len(raw) > MAX_LINE:
+            error = NgcOpenError if opening else NgcSyntaxError
+            raise error("Command too long", file=self.file, line=number, source=_too_long_echo(raw))
+        return raw
+
+    def _execute_raw(self, raw: str, number: int) -> None:
+        if not self.execute_plain(raw, number):
+            self.execute_line(raw, number)
 
     def execute_plain(self, raw: str, number: int) -> bool:
         """Execute ``raw`` if it is a line of plain words (see :func:`split_plain`); else False.
