@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from ngc import cli, rs274
+from ngc import cli, report, rs274
 from ngc.canon import ops
 from ngc.canon.jsonl import ListSink
 from ngc.errors import NgcSemanticError
@@ -213,7 +213,7 @@ def test_internal_error_is_not_a_traceback(
     def broken(path: object) -> None:
         raise ZeroDivisionError("float division by zero")
 
-    monkeypatch.setattr(cli, "check_file", broken)
+    monkeypatch.setattr(report, "check_file", broken)
     code, _, err = run(capsys, "check", str(good))
     assert code == 70
     assert err == "ngc: internal error: ZeroDivisionError: float division by zero\n"
@@ -225,7 +225,7 @@ def test_keyboard_interrupt_is_quiet(
     def interrupted(path: object) -> None:
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(cli, "check_file", interrupted)
+    monkeypatch.setattr(report, "check_file", interrupted)
     code, _, err = run(capsys, "check", str(good))
     assert (code, err) == (130, "")
 
@@ -236,7 +236,7 @@ def test_escaping_ngc_error_is_reported_normally(
     def failing(path: object) -> None:
         raise NgcSemanticError("Bad thing", file="x.ngc", line=4, column=2, source="G1 X1")
 
-    monkeypatch.setattr(cli, "check_file", failing)
+    monkeypatch.setattr(report, "check_file", failing)
     code, _, err = run(capsys, "check", str(good))
     assert code == 1
     assert err == "x.ngc:4:2: Bad thing\n    G1 X1\n     ^\n"

@@ -30,7 +30,6 @@ from .canon.ops import Sink
 from .canon.text import TextSink
 from .errors import NgcError
 from .interp.interpreter import Interpreter
-from .report import check_file, render
 
 EXIT_OK = 0
 EXIT_PROGRAM_ERROR = 1
@@ -167,17 +166,19 @@ def run_check(options: argparse.Namespace) -> int:
 
     Exit 2 if a file cannot be read, else 1 if a program has an error, else 0.
     """
+    from . import report  # loaded on use: ``ngc rs274`` starts without it
+
     code = EXIT_OK
     for i, path in enumerate(options.files):
         if i:
             sys.stdout.write("\n")
         try:
-            result = check_file(path)
+            result = report.check_file(path)
         except OSError as exc:
             sys.stdout.write(f"{path}: cannot open: {exc.strerror}\n")
             code = EXIT_USAGE
             continue
-        sys.stdout.write(render(result) + "\n")
+        sys.stdout.write(report.render(result) + "\n")
         if not result.ok and code == EXIT_OK:
             code = EXIT_PROGRAM_ERROR
     return code

@@ -25,6 +25,7 @@ if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
 
 _new = tuple.__new__
+PLAIN_CACHE_SIZE = 1024
 # rs274 reads lines into a 256-byte buffer: a line of 253 characters or more is refused.
 MAX_LINE = 252
 
@@ -55,6 +56,8 @@ class Interpreter:
         self.line = 0
         self.ended = False
         self.file: str | None = None
+        # Plain lines already read: raw text -> (words, motion code, N column).
+        self._plain_lines: dict[str, tuple[dict[str, float], int | None, str]] = {}
 
     def emit(self, op: Op) -> None:
         self.sink.emit(op, self.label, self.line)
@@ -140,6 +143,12 @@ class Interpreter:
         Comments, ``;``, ``/`` and other characters fail :func:`split_plain`'s number reading.
         """
         try:
+            hit = self._plain_lines.get(raw)
+            if hit is not None:
+                w, code, self.label = hit
+                self.line = self.state.line = number
+                self.convert_plain(w, code)
+                return True
             found = split_plain(raw.replace(" ", "").lower())
             if found is None:
                 return self.execute_comment_line(raw, number)
@@ -149,9 +158,10 @@ class Interpreter:
                 _PLAIN_LETTERS.issuperset(w)
                 or (code in _ARCS and _ARC_LETTERS.issuperset(w))
             ):
-                self.label = "N..... " if digits is None else n_label(digits)
+                self.label = label = "N..... " if digits is None else n_label(digits)
                 self.line = self.state.line = number
                 self.convert_plain(w, code)
+                self._remember_plain(raw, (w, code, label))
                 return True
             block = Block(number, raw.rstrip())
             block.resolved = words_of(w, g)
@@ -162,6 +172,13 @@ class Interpreter:
             return True
         except NgcError as err:
             raise err.locate(file=self.file, line=number, source=raw.rstrip()) from None
+
+    def _remember_plain(self, raw: str, words: tuple[dict[str, float], int | None, str]) -> None:
+        """Keep recently read plain lines (CAM output repeats its retracts and plunges)."""
+        cache = self._plain_lines
+        if len(cache) >= PLAIN_CACHE_SIZE:
+            cache.clear()
+        cache[raw] = words
 
     def execute_comment_line(self, raw: str, number: int) -> bool:
         """Execute ``raw`` if it holds nothing but one ``( ... )`` comment; else False."""

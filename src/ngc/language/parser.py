@@ -118,7 +118,8 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
         del parts[1:3]
     letters = parts[1::2]
     try:
-        w = dict(zip(letters, map(float, parts[2::2]), strict=True))
+        # The split alternates letter and text, so both slices have the same length.
+        w = dict(zip(letters, map(float, parts[2::2]), strict=False))
     except ValueError:
         return None
     if len(w) != len(letters) or not _FAST_LETTERS.issuperset(w):
