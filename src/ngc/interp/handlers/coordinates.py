@@ -194,27 +194,31 @@ def _store_g92(it: Interpreter) -> None:
 
 def g92(it: Interpreter, r: Resolved) -> None:
     """G92: offsets so the current point has the given coordinates."""
-    words = _axis_words(r)
-    if not words:
-        raise NgcSemanticError("All axes missing with g52 or g92")
     st = it.state
-    for i, v in words:
+    for i, v in _offset_words(r):
         st.g92[i] = st.pos[i] + st.g92[i] - v
         st.pos[i] = v
-    _applied(it, True)
-    _store_g92(it)
-    emit_g92(it)
+    _offset_changed(it)
 
 
 def g52(it: Interpreter, r: Resolved) -> None:
     """G52: local offset given directly (shares G92's offset)."""
+    st = it.state
+    for i, v in _offset_words(r):
+        st.pos[i] += st.g92[i] - v
+        st.g92[i] = v
+    _offset_changed(it)
+
+
+def _offset_words(r: Resolved) -> list[tuple[int, float]]:
     words = _axis_words(r)
     if not words:
         raise NgcSemanticError("All axes missing with g52 or g92")
-    st = it.state
-    for i, v in words:
-        st.pos[i] += st.g92[i] - v
-        st.g92[i] = v
+    return words
+
+
+def _offset_changed(it: Interpreter) -> None:
+    """G52 / G92 set the offset: flag it, store it (#5210-#5216) and tell the canon."""
     _applied(it, True)
     _store_g92(it)
     emit_g92(it)

@@ -153,19 +153,19 @@ def control_mode(it: Interpreter, code: int, r: Resolved) -> None:
 
 
 def distance_mode(it: Interpreter, code: int) -> None:
-    st = it.state
-    absolute = code == 900
-    if absolute != st.absolute:
-        word = "absolute" if absolute else "incremental"
-        it.emit(ops.Comment(f"interpreter: distance mode changed to {word}"))
-    st.absolute = absolute
+    """G90 / G91."""
+    _announce_distance(it, "distance", it.state.absolute, code == 900)
+    it.state.absolute = code == 900
 
 
 def arc_distance_mode(it: Interpreter, code: int) -> None:
     """G90.1 / G91.1: arc centers absolute or relative to the start point."""
-    st = it.state
-    absolute = code == 901
-    if absolute != st.arc_absolute:
+    _announce_distance(it, "IJK distance", it.state.arc_absolute, code == 901)
+    it.state.arc_absolute = code == 901
+
+
+def _announce_distance(it: Interpreter, what: str, was_absolute: bool, absolute: bool) -> None:
+    """rs274 comments on a change of a distance mode (not on a repeat)."""
+    if absolute != was_absolute:
         word = "absolute" if absolute else "incremental"
-        it.emit(ops.Comment(f"interpreter: IJK distance mode changed to {word}"))
-    st.arc_absolute = absolute
+        it.emit(ops.Comment(f"interpreter: {what} mode changed to {word}"))
