@@ -14,7 +14,7 @@ from ..canon import ops
 from ..errors import NgcError, NgcOpenError, NgcProgramError, NgcSemanticError, NgcSyntaxError
 from ..language import codes
 from ..language.parser import Block, n_label, parse_line, split_plain, words_of
-from ..language.words import Words
+from ..language.words import FREE_LETTERS, G_BY_VALUE, Words
 from .check import check
 from .handlers import coordinates, modes, motion, program
 from .parameters import Parameters
@@ -34,13 +34,13 @@ def _too_long_echo(raw: str) -> str:
     """What rs274 echoes of a line that is too long: what its buffer held."""
     return raw[:254] if len(raw) > MAX_LINE + 1 else raw + "\n"
 
-_AXES = frozenset("xyzabc")
-# Lines of only these letters and a motion code (or none) take the fast path.
-_PLAIN_LETTERS = frozenset("xyzabcfs")
+_AXES = frozenset(codes.AXIS_LETTERS)
+# Lines of only these letters and a motion code (or none) take the fast path ...
+_PLAIN_LETTERS = FREE_LETTERS
 # ... and, with G2/G3 on the line, these.
-_ARC_LETTERS = frozenset("xyzabcfsijkrp")
+_ARC_LETTERS = FREE_LETTERS | frozenset("ijkrp")
 _ARCS = (20, 30)
-_MOTION_BY_VALUE = {code / 10: code for code, known in codes.G_CODES.items() if known.group == 1}
+_MOTION_BY_VALUE = {v: code for v, (group, code) in G_BY_VALUE.items() if group == codes.G_MOTION}
 
 
 class Interpreter:

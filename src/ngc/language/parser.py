@@ -12,6 +12,7 @@ import re
 
 from ..errors import NgcError, NgcSyntaxError
 from . import expressions as ex
+from .codes import POLAR_LETTERS
 from .lexer import normalize
 from .words import Words, add_word, integer_value
 
@@ -27,7 +28,6 @@ _N_WORD = re.compile(r"n(\d+)(?:\.\d*)?")
 _LINE_NUMBER = re.compile(r"(\d+)(?:\.\d*)?")
 # Letters the fast path takes: plain real-valued words (no M, no integer words, no N/O).
 _FAST_LETTERS = frozenset("abcefgijkpqrsxyz")
-_NUMBER_CHARS = frozenset("0123456789.")
 _NUMBER_TOKEN = re.compile(r"[-+]?[0-9.]*")
 _STRTOD = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)")
 _NAME_END = re.compile(r"[^a-z]")
@@ -204,7 +204,7 @@ class _Reader:
                 self.i = end + 1
             elif c == "#":
                 items.append(self.read_parameter_setting())
-            elif c in _LETTERS or c in "@^":
+            elif c in _LETTERS or c in POLAR_LETTERS:
                 self.i += 1
                 items.append((WORD, c, self.read_value()))
             elif c == "o":

@@ -12,9 +12,9 @@ from ..errors import NgcSemanticError, NgcSyntaxError
 from . import codes
 
 INTEGER_LETTERS = frozenset("dhlt")
-_AXES = frozenset("xyzabc@^")
+_AXES = frozenset(codes.AXIS_LETTERS + codes.POLAR_LETTERS)
 # Letters that every block may carry without a code that uses them.
-_FREE = frozenset("xyzabcfs")
+FREE_LETTERS = frozenset(codes.AXIS_LETTERS + "fs")
 # M codes 100..199 are user M codes, looked up as files (not available to the standalone machine).
 M_USER_LIMIT = 199
 MAX_M_PER_LINE = 4
@@ -39,7 +39,7 @@ class Words:
         """Compute the summary flags once all words are in."""
         keys = self.w.keys()
         self.has_axes = not _AXES.isdisjoint(keys)
-        self.others = not _FREE.issuperset(keys)
+        self.others = not FREE_LETTERS.issuperset(keys)
         g = self.g
         self.plain = (
             not self.others
@@ -75,13 +75,13 @@ def add_word(words: Words, letter: str, v: float) -> None:
 
 
 # Every known G code by its value as read (1.0 -> G1), for the common exact values.
-_G_BY_VALUE: dict[float, tuple[int, int]] = {
+G_BY_VALUE: dict[float, tuple[int, int]] = {
     code / 10: (known.group, code) for code, known in codes.G_CODES.items()
 }
 
 
 def _g_word(words: Words, v: float) -> None:
-    hit = _G_BY_VALUE.get(v)
+    hit = G_BY_VALUE.get(v)
     if hit is not None:
         group, code = hit
         if group in words.g:

@@ -16,6 +16,8 @@ if TYPE_CHECKING:
 
 _COMMAND = re.compile(r"\s*(msg|debug|print|abort),", re.IGNORECASE)
 # In DEBUG/PRINT/ABORT text: a format (%d, %f, %.Nf) or a parameter (#123, #<name>).
+# The comment formats and the printf format each stands for (%.Nf stands for itself).
+_FORMATS = {"%d": "%.0f", "%f": "%.4f"}
 _SUBSTITUTION = re.compile(r"%(?:d|f|\.[0-9]f)|#(?:<[^>]*>|[0-9]+)")
 
 
@@ -51,7 +53,7 @@ def substitute(it: Interpreter, text: str) -> str:
         pos = m.end()
         token = m.group()
         if token[0] == "%":
-            fmt = {"%d": "%.0f", "%f": "%.4f"}.get(token, "%" + token[1:])
+            fmt = _FORMATS.get(token, token)
             continue
         value = _parameter(it, token)
         out.append("######" if value is None else fmt % (value + 0.0))
