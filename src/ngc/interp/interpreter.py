@@ -7,8 +7,8 @@ Canonical operations go to the sink the interpreter is given.  All state lives o
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
-from typing import TYPE_CHECKING
+from collections.abc import Callable, Iterable, Iterator
+from typing import TYPE_CHECKING, TextIO
 
 from ..canon import ops
 from ..errors import NgcError, NgcOpenError, NgcProgramError, NgcSemanticError, NgcSyntaxError
@@ -16,6 +16,7 @@ from ..language import codes
 from ..language.parser import Block, n_label, parse_line, split_plain, words_of
 from ..language.words import FREE_LETTERS, G_BY_VALUE, Words
 from .check import check
+from .flow import Flow
 from .handlers import coordinates, modes, motion, program
 from .parameters import Parameters
 from .resolve import Resolved, resolve
@@ -58,6 +59,17 @@ class Interpreter:
         self.file: str | None = None
         # Plain lines already read: raw text -> (words, motion code, N column).
         self._plain_lines: dict[str, tuple[dict[str, float], int | None, str]] = {}
+        # The file of (LOGOPEN,...) / (LOGAPPEND,...), until (LOGCLOSE) or the end of the run.
+        self.log: TextIO | None = None
+        self.percent = False
+        self.flow = Flow(self)
+        self._numbered: Iterator[tuple[int, str]] = iter(())
+
+    def close(self) -> None:
+        """Release what the program opened (the log file)."""
+        if self.log is not None:
+            self.log.close()
+            self.log = None
 
     def emit(self, op: Op) -> None:
         self.sink.emit(op, self.label, self.line)
@@ -82,11 +94,13 @@ class Interpreter:
 
         The program is "open" once its first non-blank line is read (``on_open`` is called then);
         an empty program raises :class:`NgcOpenError`.  Raises :class:`NgcError` (with file and
-        line) on the first error.
+        line) on the first error.  Plain lines stream; from an o-word line on, :mod:`.flow` runs
+        the program until no loop can return to lines already read.
         """
         self.file = file
         self.ended = False
         numbered = enumerate(lines, 1)
+        self._numbered = numbered
         number, raw = 0, ""
         for number, raw in numbered:
             raw = self._checked(raw, number, opening=True)
@@ -97,9 +111,12 @@ class Interpreter:
                                source=raw.rstrip("\r\n"))
         if on_open is not None:
             on_open()
-        percent = raw.strip() == "%"
+        self.percent = percent = raw.strip() == "%"
+        flow = self.flow
         if not percent:
             self._execute_raw(raw, number)
+            if flow.tape is not None and not flow.run_guarded():
+                return
         if self.ended:
             return
         plain = self.execute_plain
@@ -108,11 +125,12 @@ class Interpreter:
             if "\x00" in raw or len(raw) > MAX_LINE:
                 raw = self._checked(raw, number, opening=False)
             if percent and raw.strip() == "%":
-                self.label = "N..... "
-                self.emit(ops.Finish())
+                self.finish_percent()
                 return
             if not plain(raw, number):
                 self.execute_line(raw, number)
+                if flow.tape is not None and not flow.run_guarded():
+                    return
             if self.ended:
                 if percent:
                     self.label = "N..... "
@@ -122,6 +140,19 @@ class Interpreter:
             "File ended with no percent sign or program end"
         )
         raise NgcProgramError(message, file=file, line=number, source=raw.rstrip())
+
+    def finish_percent(self) -> None:
+        """The closing ``%`` of a ``%``-delimited program."""
+        self.label = "N..... "
+        self.emit(ops.Finish())
+        self.ended = True
+
+    def checked_line(self, raw: str, number: int) -> str:
+        """A line read after the program opened (see :meth:`_checked`)."""
+        raw = raw.rstrip("\n")
+        if "\x00" in raw or len(raw) > MAX_LINE:
+            raw = self._checked(raw, number, opening=False)
+        return raw
 
     def _checked(self, raw: str, number: int, opening: bool) -> str:
         """A line as rs274 reads it: up to a NUL byte, refused when too long."""
@@ -202,6 +233,9 @@ class Interpreter:
     def execute(self, block: Block) -> None:
         """Resolve, check and convert one block."""
         if block.delete and self.state.blocks_deleted:
+            return
+        if block.oword is not None:
+            self.flow.enter(block, self._numbered)
             return
         self.label = block.label
         self.line = self.state.line = block.line

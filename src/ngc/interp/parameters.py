@@ -100,10 +100,10 @@ PREDEFINED: dict[str, Getter] = {
     "_current_pocket": lambda s: 1.0,
     "_selected_tool": lambda s: 0.0,
     "_selected_pocket": lambda s: -1.0,
-    "_value": lambda s: 0.0,
-    "_value_returned": lambda s: 0.0,
+    "_value": lambda s: s.value,
+    "_value_returned": lambda s: s.value_returned,
     "_task": lambda s: 0.0,
-    "_call_level": lambda s: 0.0,
+    "_call_level": lambda s: float(s.call_level),
     "_remap_level": lambda s: 0.0,
 }
 

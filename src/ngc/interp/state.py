@@ -20,6 +20,7 @@ class State:
         "adaptive_feed",
         "arc_absolute",
         "blocks_deleted",
+        "call_level",
         "ccomp",
         "control_mode",
         "coord_index",
@@ -46,7 +47,9 @@ class State:
         "speed_override",
         "spindle",
         "tool_offset",
-    )
+        "value",
+        "value_returned",
+)
 
     def __init__(self) -> None:
         self.pos = [0.0] * AXES  # current point, program coordinates
@@ -79,6 +82,9 @@ class State:
         self.feed_hold = True  # M53
         self.line = 0  # source line being executed (#<_line>)
         self.blocks_deleted = False  # block delete switch (rs274 -b)
+        self.value = 0.0  # #<_value>: the last subroutine's return value
+        self.value_returned = 0.0  # #<_value_returned>: 1 if it returned one
+        self.call_level = 0  # #<_call_level>: subroutine calls under way
 
     @property
     def units_factor(self) -> float:

@@ -14,6 +14,7 @@ from ..errors import NgcError, NgcSyntaxError
 from . import expressions as ex
 from .codes import POLAR_LETTERS
 from .lexer import normalize
+from .oword import CONDITION, KEYWORDS, OPTIONAL_VALUE, PROGRAM, OWord, number_label
 from .words import Words, add_word, integer_value
 
 WORD = 0
@@ -207,10 +208,46 @@ class _Reader:
             elif c in _LETTERS or c in POLAR_LETTERS:
                 self.i += 1
                 items.append((WORD, c, self.read_value()))
-            elif c == "o":
-                raise self.error("O-word subroutines and control flow are not supported yet")
+            elif c == "o" and not items:
+                self.read_oword()
             else:
                 raise self.error(f"Bad character '{_show_char(c)}' used")
+
+    def read_oword(self) -> None:
+        """An o-word line: label, keyword, its bracketed values, then comments only."""
+        s = self.s
+        self.i += 1  # 'o'
+        label: str | None = None
+        label_expr: ex.Value | None = None
+        if s.startswith("<", self.i):
+            label = self.read_name()
+        else:
+            value = self.read_value()
+            if isinstance(value, float):
+                label = number_label(value)
+            else:
+                label_expr = value
+        keyword = next((k for k in KEYWORDS if s.startswith(k, self.i)), None)
+        if keyword is None:
+            if self.i < len(s) and s[self.i] != "(":
+                raise self.error("Unknown control command in o word")
+            keyword = PROGRAM
+        self.i += len(keyword)
+        oword = OWord(keyword, label, label_expr)
+        if keyword in CONDITION:
+            if not s.startswith("[", self.i):
+                raise self.error(f"Left bracket missing after '{keyword}'")
+            oword.args.append(self.read_expression())
+        elif keyword == "call":
+            while s.startswith("[", self.i):
+                oword.args.append(self.read_expression())
+        elif keyword in OPTIONAL_VALUE and s.startswith("[", self.i):
+            oword.args.append(self.read_expression())
+        while self.i < len(s):
+            if s[self.i] != "(":
+                raise self.error("Unexpected character after O-word")
+            self.i = s.index(")", self.i) + 1
+        self.block.oword = oword
 
     def read_line_number(self) -> None:
         m = _N_WORD.match(self.s)
