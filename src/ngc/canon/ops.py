@@ -207,6 +207,22 @@ class Message(NamedTuple):
     text: str
 
 
+class LogOpen(NamedTuple):
+    file: str
+
+
+class LogAppend(NamedTuple):
+    file: str
+
+
+class Log(NamedTuple):
+    text: str
+
+
+class LogClose(NamedTuple):
+    """No arguments."""
+
+
 class ProgramStop(NamedTuple):
     """No arguments."""
 
@@ -268,6 +284,10 @@ TEMPLATES: Mapping[type, str] = MappingProxyType(
         DisableFeedHold: "DISABLE_FEED_HOLD()",
         Comment: 'COMMENT("%s")',
         Message: 'MESSAGE("%s")',
+        LogOpen: 'LOGOPEN("%s")',
+        LogAppend: 'LOGAPPEND("%s")',
+        Log: 'LOG("%s")',
+        LogClose: "LOGCLOSE()",
         ProgramStop: "PROGRAM_STOP()",
         OptionalProgramStop: "OPTIONAL_PROGRAM_STOP()",
         PalletShuttle: "PALLET_SHUTTLE()",

@@ -86,7 +86,9 @@ class Tape(Body):
             if item is None:
                 return None
             read, raw = item
-            lines.append(self.interp.checked_line(raw, read))
+            raw = self.interp.checked_line(raw, read)
+            lines.append(raw)
+            self.interp.last_read = (read, raw)
         return lines[i]
 
 
@@ -192,9 +194,11 @@ class Flow:
                 self.oword(f, entry)
             if it.ended:
                 return False
-            if len(frames) == 1 and not f.active and f.pc > f.body.last():
-                self.tape = None
-                return True
+            if len(frames) == 1:
+                f = frames[0]
+                if not f.active and f.pc > f.body.last():
+                    self.tape = None
+                    return True
 
     def compile(self, body: Body, number: int, raw: str) -> Block | None:
         """Parse a line once and keep the block; None for the closing ``%``."""
@@ -301,6 +305,9 @@ class Flow:
                 entry = block
             ow = entry.oword
             if ow is None or ow.keyword not in kinds:
+                if ow is not None and ow.keyword == "sub" and kinds[0] == "endsub":
+                    raise NgcSemanticError("Nested subroutine definition", file=body.file,
+                                           line=number, source=entry.source)
                 continue
             if ow.label_of(params) == label:
                 return entry

@@ -62,6 +62,8 @@ class Interpreter:
         # The file of (LOGOPEN,...) / (LOGAPPEND,...), until (LOGCLOSE) or the end of the run.
         self.log: TextIO | None = None
         self.percent = False
+        # The last line control flow read ahead of the streaming loop: (number, text).
+        self.last_read = (0, "")
         self.flow = Flow(self)
         self._numbered: Iterator[tuple[int, str]] = iter(())
 
@@ -101,6 +103,7 @@ class Interpreter:
         self.ended = False
         numbered = enumerate(lines, 1)
         self._numbered = numbered
+        self.last_read = (0, "")
         number, raw = 0, ""
         for number, raw in numbered:
             raw = self._checked(raw, number, opening=True)
@@ -139,6 +142,8 @@ class Interpreter:
         message = "File ended with no percent sign" if percent else (
             "File ended with no percent sign or program end"
         )
+        if self.last_read[0] > number:
+            number, raw = self.last_read
         raise NgcProgramError(message, file=file, line=number, source=raw.rstrip())
 
     def finish_percent(self) -> None:

@@ -238,16 +238,22 @@ class _Reader:
             if not s.startswith("[", self.i):
                 raise self.error(f"Left bracket missing after '{keyword}'")
             oword.args.append(self.read_expression())
-        elif keyword == "call":
-            while s.startswith("[", self.i):
+        elif keyword == "call" or keyword in OPTIONAL_VALUE:
+            while True:
+                self.skip_comments()
+                if not s.startswith("[", self.i) or (keyword != "call" and oword.args):
+                    break
                 oword.args.append(self.read_expression())
-        elif keyword in OPTIONAL_VALUE and s.startswith("[", self.i):
-            oword.args.append(self.read_expression())
-        while self.i < len(s):
-            if s[self.i] != "(":
-                raise self.error("Unexpected character after O-word")
-            self.i = s.index(")", self.i) + 1
+        self.skip_comments()
+        if self.i < len(s):
+            raise self.error("Unexpected character after O-word")
         self.block.oword = oword
+
+    def skip_comments(self) -> None:
+        """Comments on an o-word line are read and dropped."""
+        s = self.s
+        while s.startswith("(", self.i):
+            self.i = s.index(")", self.i) + 1
 
     def read_line_number(self) -> None:
         m = _N_WORD.match(self.s)

@@ -1,24 +1,35 @@
-"""Comments and program flow: COMMENT, (MSG,…), (DEBUG,…), (PRINT,…), (ABORT,…), M0/M1/M60 stops
-and the M2/M30 program end (overview.adoc "Comments", "Messages"; m-code.adoc "M2, M30")."""
+"""Comments and program flow: COMMENT, (MSG,…), (DEBUG,…), (PRINT,…), (ABORT,…), the log comments
+(see :mod:`.logfile`), M0/M1/M60 stops and the M2/M30 program end (overview.adoc "Comments",
+"Messages", "Logging"; m-code.adoc "M2, M30")."""
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
+from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from ...canon import ops
-from ...errors import NgcProgramError, NgcRuntimeError
+from ...errors import NgcProgramError
 from ..parameters import DEBUG_ENABLE
-from . import coordinates
+from . import coordinates, logfile
 
 if TYPE_CHECKING:
     from ..interpreter import Interpreter
 
-_COMMAND = re.compile(r"\s*(msg|debug|print|abort),", re.IGNORECASE)
-# In DEBUG/PRINT/ABORT text: a format (%d, %f, %.Nf) or a parameter (#123, #<name>).
+# An active comment: white space (C's isspace), the keyword (any case), a comma and the text;
+# or LOGCLOSE alone.  Anything else (a space before the comma, text after LOGCLOSE) is a COMMENT.
+_COMMAND = re.compile(
+    r"[ \t\n\v\f\r]*(?:(msg|debug|print|abort|logopen|logappend|log),|(logclose)\Z)", re.IGNORECASE
+)
+# In DEBUG/PRINT/LOG/ABORT text: a format (%d, %f, %.Nf) or a parameter (#123, #<name>); a "%"
+# before a "." that does not start a format is dropped (rs274 does so).
 # The comment formats and the printf format each stands for (%.Nf stands for itself).
 _FORMATS = {"%d": "%.0f", "%f": "%.4f"}
-_SUBSTITUTION = re.compile(r"%(?:d|f|\.[0-9]f)|#(?:<[^>]*>|[0-9]+)")
+_SUBSTITUTION = re.compile(r"%(?:d|f|\.[0-9]f|(?=\.))|#(?:<[^>]*>|[0-9]+)")
+# rs274 reads a parameter number in a comment as a C long (saturating) and keeps an int of it.
+_LONG_MAX = 2**63 - 1
+_INT_WRAP = 2**32
 
 
 def comment(it: Interpreter, text: str) -> None:
@@ -28,23 +39,63 @@ def comment(it: Interpreter, text: str) -> None:
     if m is None:
         body = body.lstrip(" \t")
         if body:
+            logfile.probe_comment(it, body)
             it.emit(ops.Comment(body))
         return
-    kind = m.group(1).lower()
-    rest = body[m.end() :]
-    if kind == "msg":
-        it.emit(ops.Message(rest))
-    elif kind == "debug":
-        if it.params.numbered[DEBUG_ENABLE] != 0.0:
-            it.emit(ops.Message(substitute(it, rest)))
-    elif kind == "print":
-        it.sink.print_text(substitute(it, rest))
-    else:
-        raise NgcProgramError(substitute(it, rest))
+    kind = (m.group(1) or m.group(2)).lower()
+    _ACTIVE[kind](it, body[m.end() :])
+
+
+def _msg(it: Interpreter, rest: str) -> None:
+    it.emit(ops.Message(rest))
+
+
+def _debug(it: Interpreter, rest: str) -> None:
+    if it.params.numbered[DEBUG_ENABLE] != 0.0:
+        it.emit(ops.Message(substitute(it, rest)))
+
+
+def _print(it: Interpreter, rest: str) -> None:
+    it.sink.print_text(substitute(it, rest))
+
+
+def _abort(it: Interpreter, rest: str) -> None:
+    raise NgcProgramError(substitute(it, rest))
+
+
+def _log(it: Interpreter, rest: str) -> None:
+    logfile.log(it, substitute(it, rest))
+
+
+def _log_open(it: Interpreter, rest: str) -> None:
+    logfile.log_open(it, rest, append=False)
+
+
+def _log_append(it: Interpreter, rest: str) -> None:
+    logfile.log_open(it, rest, append=True)
+
+
+def _log_close(it: Interpreter, rest: str) -> None:
+    logfile.log_close(it)
+
+
+_ACTIVE: MappingProxyType[str, Callable[[Interpreter, str], None]] = MappingProxyType({
+    "msg": _msg,
+    "debug": _debug,
+    "print": _print,
+    "abort": _abort,
+    "log": _log,
+    "logopen": _log_open,
+    "logappend": _log_append,
+    "logclose": _log_close,
+})
 
 
 def substitute(it: Interpreter, text: str) -> str:
-    """Replace parameters by their values; ``%d`` / ``%f`` / ``%.Nf`` set the format of the rest."""
+    """Replace parameters by their values; ``%d`` / ``%f`` / ``%.Nf`` set the format of the rest.
+
+    A parameter that does not exist (an undefined name, a number out of range) reads ``######``.
+    """
     fmt = "%f"
     out: list[str] = []
     pos = 0
@@ -53,7 +104,8 @@ def substitute(it: Interpreter, text: str) -> str:
         pos = m.end()
         token = m.group()
         if token[0] == "%":
-            fmt = _FORMATS.get(token, token)
+            if token != "%":
+                fmt = _FORMATS.get(token, token)
             continue
         value = _parameter(it, token)
         out.append("######" if value is None else fmt % (value + 0.0))
@@ -62,16 +114,16 @@ def substitute(it: Interpreter, text: str) -> str:
 
 
 def _parameter(it: Interpreter, token: str) -> float | None:
-    """The value a ``#...`` in a comment stands for; None for an undefined name."""
+    """The value a ``#...`` in a comment stands for; None ("######") if there is no such parameter."""
     params = it.params
     if token[1] == "<":
         name = "".join(token[2:-1].split()).lower()
         if not params.exists(name):
             return None
         return params.named(name)
-    index = int(token[1:])
-    if index < 1 or index >= len(params.numbered):
-        raise NgcRuntimeError("Parameter number out of range")
+    index = (min(int(token[1:]), _LONG_MAX) + _INT_WRAP // 2) % _INT_WRAP - _INT_WRAP // 2
+    if not 0 <= index < len(params.numbered):
+        return None
     return params.num(index)
 
 
