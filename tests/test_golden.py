@@ -33,10 +33,7 @@ def messages(text: str) -> list[str]:
 
 
 # Known differences, each with its reason; strict, so a case that starts passing is noticed.
-KNOWN = {
-    "expr-func-tan-90": "rs274 evaluates trigonometry in x87 long double: TAN[90] is "
-    "-3.99e19 there, 1.63e16 in double precision",
-}
+KNOWN: dict[str, str] = {}
 
 
 def _cases() -> list[object]:

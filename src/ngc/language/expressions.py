@@ -10,6 +10,7 @@ left-associative within their precedence group, comparisons equal within ``TOLER
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from collections.abc import Callable
 from typing import Protocol
 
@@ -142,19 +143,75 @@ def _round(x: float) -> float:
     return _signed(float(math.floor(abs(x) + 0.5)) * (1.0 if x >= 0 else -1.0), x)
 
 
+# rs274 computes trigonometry in x87 long double: the angle in radians is x * pi / 180 with pi and
+# both products rounded to 64-bit mantissas, then the exact function of that angle.  Away from the
+# function's zeros the double result agrees; near them (COS[90], SIN[180], TAN[90]) only the long
+# double angle gives rs274's sign and size, so it is rebuilt exactly there.
+_PI = Fraction(0xC90FDAA22168C234C4C6628B80DC1CD129024E088A67CC74020BBEA63B139B22, 1 << 254)
+_PI_LONG_DOUBLE = Fraction(0xC90FDAA22168C235, 1 << 62)
+_NEAR_ZERO = 1e-9
+
+
+def _round_long_double(q: Fraction) -> Fraction:
+    """``q`` rounded to a 64-bit mantissa, ties to even (x87 extended precision)."""
+    if q == 0:
+        return q
+    sign = -1 if q < 0 else 1
+    n, d = abs(q.numerator), q.denominator
+    shift = 63 - (n.bit_length() - d.bit_length())
+    if (n << shift if shift >= 0 else n) < (d if shift >= 0 else d << -shift) << 63:
+        shift += 1
+    num, den = (n << shift, d) if shift >= 0 else (n, d << -shift)
+    m, rem = divmod(num, den)
+    if 2 * rem > den or (2 * rem == den and m & 1):
+        m += 1
+    return sign * Fraction(m) / (Fraction(2) ** shift)
+
+
+def _quadrant(degrees: float) -> tuple[int, float]:
+    """The long double angle of ``degrees`` as (k mod 4, d): angle = k * pi/2 + d."""
+    angle = _round_long_double(_round_long_double(Fraction(degrees) * _PI_LONG_DOUBLE) / 180)
+    k = round(angle / (_PI / 2))
+    return k % 4, float(angle - k * _PI / 2)
+
+
+def _sin(x: float) -> float:
+    r = math.sin(math.radians(x))
+    if abs(r) > _NEAR_ZERO:
+        return r
+    k, d = _quadrant(x)
+    return (math.sin(d), math.cos(d), -math.sin(d), -math.cos(d))[k]
+
+
+def _cos(x: float) -> float:
+    r = math.cos(math.radians(x))
+    if abs(r) > _NEAR_ZERO:
+        return r
+    k, d = _quadrant(x)
+    return (math.cos(d), -math.sin(d), -math.cos(d), math.sin(d))[k]
+
+
+def _tan(x: float) -> float:
+    r = math.tan(math.radians(x))
+    if _NEAR_ZERO < abs(r) < 1 / _NEAR_ZERO:
+        return r
+    k, d = _quadrant(x)
+    return math.tan(d) if k % 2 == 0 else -1.0 / math.tan(d)
+
+
 UNARY: dict[str, Callable[[float], float]] = {
     "abs": abs,
     "acos": _acos,
     "asin": _asin,
-    "cos": lambda x: math.cos(math.radians(x)),
+    "cos": _cos,
     "exp": _exp,
     "fix": lambda x: _signed(float(math.floor(x)), x),
     "fup": lambda x: _signed(float(math.ceil(x)), x),
     "round": _round,
     "ln": _ln,
-    "sin": lambda x: math.sin(math.radians(x)),
+    "sin": _sin,
     "sqrt": _sqrt,
-    "tan": lambda x: math.tan(math.radians(x)),
+    "tan": _tan,
 }
 
 
