@@ -10,8 +10,8 @@ left-associative within their precedence group, comparisons equal within ``TOLER
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 from collections.abc import Callable
+from fractions import Fraction
 from typing import Protocol
 
 from ..errors import NgcRuntimeError
@@ -175,7 +175,7 @@ def _quadrant(degrees: float) -> tuple[int, float]:
     return k % 4, float(angle - k * _PI / 2)
 
 
-def _sin(x: float) -> float:
+def sin_degrees(x: float) -> float:
     r = math.sin(math.radians(x))
     if abs(r) > _NEAR_ZERO:
         return r
@@ -183,7 +183,7 @@ def _sin(x: float) -> float:
     return (math.sin(d), math.cos(d), -math.sin(d), -math.cos(d))[k]
 
 
-def _cos(x: float) -> float:
+def cos_degrees(x: float) -> float:
     r = math.cos(math.radians(x))
     if abs(r) > _NEAR_ZERO:
         return r
@@ -203,13 +203,13 @@ UNARY: dict[str, Callable[[float], float]] = {
     "abs": abs,
     "acos": _acos,
     "asin": _asin,
-    "cos": _cos,
+    "cos": cos_degrees,
     "exp": _exp,
     "fix": lambda x: _signed(float(math.floor(x)), x),
     "fup": lambda x: _signed(float(math.ceil(x)), x),
     "round": _round,
     "ln": _ln,
-    "sin": _sin,
+    "sin": sin_degrees,
     "sqrt": _sqrt,
     "tan": _tan,
 }

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 
 from ...canon import ops
 from ...errors import NgcSemanticError
+from ...language.expressions import cos_degrees, sin_degrees
 from . import coordinates
 
 if TYPE_CHECKING:
@@ -71,9 +72,8 @@ def _polar_end(pos: list[float], w: dict[str, float], absolute: bool) -> list[fl
     end = relative_end(pos, w) if not absolute else [
         pos[0], pos[1], w.get("z", pos[2]), w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])
     ]
-    t = math.radians(angle)
-    end[0] = radius * math.cos(t)
-    end[1] = radius * math.sin(t)
+    end[0] = radius * cos_degrees(angle)
+    end[1] = radius * sin_degrees(angle)
     return end
 
 
