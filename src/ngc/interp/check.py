@@ -69,20 +69,21 @@ def _check_other_words(r: Resolved, active: int | None, non_modal: int | None) -
     m = r.m
     arc = active in _ARC
     g10 = non_modal == 100
+    m98 = m.get(codes.M_USER) == 98
     if "i" in w and not (arc or g10):
         raise NgcSemanticError("I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it")
     if "j" in w and not (arc or g10):
         raise NgcSemanticError("J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it")
     if "k" in w and not (arc or g10):
         raise NgcSemanticError("K word with no G2, G3, G33, G33.1, G76, or G87 to use it")
-    if "l" in w and not g10:
+    if "l" in w and not (g10 or m98):
         raise NgcSemanticError(
             "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or "
             "NURBS code"
         )
     if "p" in w and not (
         arc or non_modal in (40, 100) or g.get(codes.G_CONTROL) == 640
-        or m.get(codes.M_OVERRIDE, 0) in (50, 51, 52, 53)
+        or m.get(codes.M_OVERRIDE, 0) in (50, 51, 52, 53) or m98
     ):
         raise NgcSemanticError(_P_MSG)
     if "q" in w and not (g.get(codes.G_CONTROL) == 640 or g10):

@@ -26,12 +26,12 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Iterator
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NoReturn
 
 from ..errors import NgcError, NgcProgramError, NgcRuntimeError, NgcSemanticError
 from ..language.expressions import evaluate
 from ..language.lexer import normalize
-from ..language.oword import MAX_ARGS, OWord
+from ..language.oword import MAX_ARGS, PROGRAM, OWord, number_label
 from ..language.parser import Block, parse_line
 
 if TYPE_CHECKING:
@@ -93,20 +93,27 @@ class Tape(Body):
 
 
 class Sub:
-    """A defined subroutine: its label and the body from its ``sub`` line to its ``endsub``."""
+    """A defined subroutine: its label and the body from its ``sub`` line to its ``endsub``.
 
-    __slots__ = ("body", "label", "start")
+    A Fanuc-style program (``o100`` ... ``M99``) runs in the body it was found in, from its
+    ``o100`` line on, until ``M99``.
+    """
 
-    def __init__(self, label: str, body: Body, start: int) -> None:
+    __slots__ = ("ahead", "body", "fanuc", "label", "start")
+
+    def __init__(self, label: str, body: Body, start: int, fanuc: bool = False) -> None:
         self.label = label
         self.body = body
         self.start = start
+        self.fanuc = fanuc
+        # Found by a call searching ahead of the line being run.
+        self.ahead = False
 
 
 class Frame:
     """One scope being run: the main program or one call of a subroutine."""
 
-    __slots__ = ("active", "body", "call_block", "labels", "pc", "saved", "sub")
+    __slots__ = ("active", "body", "call_block", "labels", "pc", "repeats", "saved", "sub")
 
     def __init__(self, body: Body, pc: int, sub: Sub | None) -> None:
         self.body = body
@@ -118,6 +125,8 @@ class Frame:
         self.active: dict[str, float] = {}
         self.saved: list[float] = []
         self.call_block: Block | None = None
+        # M98 L: further runs of a Fanuc-style program after this one.
+        self.repeats = 0
 
 
 def oword_line(raw: str) -> bool:
@@ -163,11 +172,8 @@ class Flow:
         self.frames = [self.main]
 
     def run_guarded(self) -> bool:
-        """:meth:`run`, ending quietly when the closing ``%`` is met while skipping."""
-        try:
-            return self.run()
-        except _Ended:
-            return False
+        """:meth:`run` (kept as the entry point of the streaming loop)."""
+        return self.run()
 
     def run(self) -> bool:
         """Run lines until streaming can resume (True) or the program has ended (False)."""
@@ -181,9 +187,10 @@ class Flow:
             if entry is None:
                 self.end_of_file(f)
             if entry.__class__ is str:
-                entry = self.compile(f.body, number, entry)  # type: ignore[arg-type]
-                if entry is None:
+                compiled = self.compile(f.body, number, str(entry))
+                if compiled is None:
                     return False
+                entry = compiled
             assert isinstance(entry, Block)
             f.pc = number + 1
             if entry.delete and it.state.blocks_deleted:
@@ -213,7 +220,7 @@ class Flow:
         body.lines[number - body.first] = block
         return block
 
-    def end_of_file(self, f: Frame) -> None:
+    def end_of_file(self, f: Frame) -> NoReturn:
         last = f.body.last()
         entry = f.body.fetch(last)
         source = entry.source if isinstance(entry, Block) else (entry or "").rstrip()
@@ -297,11 +304,15 @@ class Flow:
                 self.end_of_file(f)
             if isinstance(entry, str):
                 if not oword_line(entry):
+                    if self.interp.percent and entry.strip() == "%" and body is self.tape:
+                        self.interp.finish_percent()
+                        prefix = "O" if seeking is not None or "endsub" in kinds else "O#"
+                        raise NgcProgramError(
+                            f"Failed to find sub '{prefix}{label}' before EOF",
+                            file=body.file, line=number, source=entry.rstrip())
                     continue
                 block = self.compile(body, number, entry)
-                if block is None:
-                    self.interp.ended = True
-                    raise _Ended
+                assert block is not None
                 entry = block
             ow = entry.oword
             if ow is None or ow.keyword not in kinds:
@@ -427,6 +438,10 @@ class Flow:
     def _sub(self, f: Frame, block: Block, ow: OWord) -> None:
         """A definition met in sequence: keep its lines, go on after its ``endsub``."""
         label = self.label(f, block, ow)
+        known = self.subs.get(label)
+        if known is not None and known.ahead and known.start == block.line:
+            raise NgcSemanticError(
+                f"File:{f.body.file} line:{block.line} sub: o|{label}| found in illegal location")
         end = self.jump(f, block, ow, label, ("endsub",))
         self.define(f.body, label, block.line, end.line)
         f.pc = end.line + 1
@@ -459,14 +474,29 @@ class Flow:
         self.frames.append(frame)
         it.state.call_level = len(self.frames) - 1
 
-    def find(self, f: Frame, block: Block, label: str) -> Sub:
+    def find(self, f: Frame, block: Block, label: str, fanuc: bool = False) -> Sub:
         """A subroutine not defined yet: later in this file, else in ``<label>.ngc``."""
-        path = self.sub_file(label)
-        if path is None:
-            start = self.skip(f, block.line, label, ("sub",), seeking=block)
-            end = self.skip(f, start.line, label, ("endsub",), seeking=block)
-            return self.define(f.body, label, start.line, end.line)
-        return self.load(path, label, block)
+        path = None if fanuc else self.sub_file(label)
+        if path is not None:
+            return self.load(path, label, block)
+        start = self.skip(f, block.line, label, ("sub", PROGRAM), seeking=block)
+        assert start.oword is not None
+        keyword = start.oword.keyword
+        if keyword == PROGRAM:
+            if not fanuc:
+                raise NgcSemanticError("Fanuc 'O....' subroutine must be called with 'M98'",
+                                       file=f.body.file, line=start.line, source=start.source)
+            sub = Sub(label, f.body, start.line, fanuc=True)
+            self.subs[label] = sub
+        elif fanuc:
+            raise NgcSemanticError("'O.... sub' subroutine must be called with 'O.... call'",
+                                   file=f.body.file, line=start.line, source=start.source)
+        else:
+            # Run from the definition found; its end is wherever ``endsub`` turns up.
+            sub = Sub(label, f.body, start.line)
+            self.subs[label] = sub
+        sub.ahead = True
+        return sub
 
     def sub_file(self, label: str) -> str | None:
         name = label + ".ngc"
@@ -485,13 +515,16 @@ class Flow:
         body = Body(path, 1, list(raw_lines))
         frame = Frame(body, 1, None)
         start = self.skip(frame, 0, label, ("sub",), seeking=block)
-        end = self.skip(frame, start.line, label, ("endsub",), seeking=block)
-        return self.define(body, label, start.line, end.line)
+        sub = Sub(label, body, start.line)
+        self.subs[label] = sub
+        return sub
 
     def _return(self, f: Frame, block: Block, ow: OWord) -> None:
         it = self.interp
         if f.sub is None:
             raise NgcSemanticError(_quote(block) % "not in a subroutine definition")
+        if f.sub.fanuc:
+            raise NgcSemanticError("Fanuc 'O....' subroutine definition must end with 'M99'")
         if ow.args:
             it.state.value = evaluate(ow.args[0], it.params)
             it.state.value_returned = 1.0
@@ -503,8 +536,53 @@ class Flow:
     _endsub = _return
 
     def _program(self, f: Frame, block: Block, ow: OWord) -> None:
-        raise NgcSemanticError("Fanuc-style numbered programs are not supported yet")
+        """``o100`` alone: a program title (``o1`` at the top), nothing to run."""
 
+    # -- Fanuc style: M98 / M99 ------------------------------------------------------------------
+    def fanuc(self, block: Block, code: int, p: float | None, loops: float | None) -> bool:
+        """Run ``M98 P- L-`` or ``M99``; False when M99 ends the main program (like M2)."""
+        if self.tape is None:
+            self.enter(block, self.interp._numbered)
+            self.frames[-1].pc = block.line + 1
+        f = self.frames[-1]
+        if code == 99:
+            return self.m99(f, block)
+        if p is None:
+            raise NgcSemanticError("Found 'm98' code with no P-word")
+        count = 1 if loops is None else int(loops)
+        if count < 0:
+            raise NgcSemanticError("Negative l word used")
+        label = number_label(p)
+        sub = self.subs.get(label)
+        if sub is None:
+            sub = self.find(f, block, label, fanuc=True)
+        elif not sub.fanuc:
+            start = sub.body.fetch(sub.start)
+            assert isinstance(start, Block)
+            raise NgcSemanticError("'O.... sub' subroutine must be called with 'O.... call'",
+                                   file=sub.body.file, line=sub.start, source=start.source)
+        if count == 0:
+            return True
+        if len(self.frames) > MAX_CALL_DEPTH:
+            raise NgcRuntimeError("Too many subroutine levels")
+        frame = Frame(sub.body, sub.start + 1, sub)
+        frame.repeats = count - 1
+        frame.call_block = block
+        self.frames.append(frame)
+        self.interp.state.call_level = len(self.frames) - 1
+        return True
 
-class _Ended(Exception):
-    """The closing ``%`` was met while skipping."""
+    def m99(self, f: Frame, block: Block) -> bool:
+        sub = f.sub
+        if sub is None:
+            return False
+        if not sub.fanuc:
+            raise NgcSemanticError(
+                "'O.... endsub' or 'O.... return' must follow 'O.... sub' subroutine definition")
+        if f.repeats > 0:
+            f.repeats -= 1
+            f.pc = sub.start + 1
+            return True
+        self.frames.pop()
+        self.interp.state.call_level = len(self.frames) - 1
+        return True

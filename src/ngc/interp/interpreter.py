@@ -7,6 +7,7 @@ Canonical operations go to the sink the interpreter is given.  All state lives o
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Callable, Iterable, Iterator
 from typing import TYPE_CHECKING, TextIO
 
@@ -61,17 +62,21 @@ class Interpreter:
         self._plain_lines: dict[str, tuple[dict[str, float], int | None, str]] = {}
         # The file of (LOGOPEN,...) / (LOGAPPEND,...), until (LOGCLOSE) or the end of the run.
         self.log: TextIO | None = None
+        # The file of (PROBEOPEN ...), until (PROBECLOSE) or the end of the run.
+        self.probe_log: TextIO | None = None
         self.percent = False
+        self.finished = False  # the closing % was read
         # The last line control flow read ahead of the streaming loop: (number, text).
         self.last_read = (0, "")
         self.flow = Flow(self)
         self._numbered: Iterator[tuple[int, str]] = iter(())
 
     def close(self) -> None:
-        """Release what the program opened (the log file)."""
-        if self.log is not None:
-            self.log.close()
-            self.log = None
+        """Release what the program opened (the log and probe log files)."""
+        for handle in (self.log, self.probe_log):
+            if handle is not None:
+                handle.close()
+        self.log = self.probe_log = None
 
     def emit(self, op: Op) -> None:
         self.sink.emit(op, self.label, self.line)
@@ -97,10 +102,22 @@ class Interpreter:
         The program is "open" once its first non-blank line is read (``on_open`` is called then);
         an empty program raises :class:`NgcOpenError`.  Raises :class:`NgcError` (with file and
         line) on the first error.  Plain lines stream; from an o-word line on, :mod:`.flow` runs
-        the program until no loop can return to lines already read.
+        the program until no loop can return to lines already read.  Files the program opened
+        (logs) are closed at the end, whatever the outcome.
         """
+        try:
+            self._run(lines, file, on_open)
+        finally:
+            self.close()
+
+    def _run(
+        self,
+        lines: Iterable[str],
+        file: str | None,
+        on_open: Callable[[], None] | None,
+    ) -> None:
         self.file = file
-        self.ended = False
+        self.ended = self.finished = False
         numbered = enumerate(lines, 1)
         self._numbered = numbered
         self.last_read = (0, "")
@@ -119,8 +136,10 @@ class Interpreter:
         if not percent:
             self._execute_raw(raw, number)
             if flow.tape is not None and not flow.run_guarded():
+                self._after_end()
                 return
         if self.ended:
+            self._after_end()
             return
         plain = self.execute_plain
         for number, raw in numbered:
@@ -133,11 +152,10 @@ class Interpreter:
             if not plain(raw, number):
                 self.execute_line(raw, number)
                 if flow.tape is not None and not flow.run_guarded():
+                    self._after_end()
                     return
             if self.ended:
-                if percent:
-                    self.label = "N..... "
-                    self.emit(ops.Comment("interpreter: percent sign missing from end of file"))
+                self._after_end()
                 return
         message = "File ended with no percent sign" if percent else (
             "File ended with no percent sign or program end"
@@ -146,11 +164,28 @@ class Interpreter:
             number, raw = self.last_read
         raise NgcProgramError(message, file=file, line=number, source=raw.rstrip())
 
+    def _after_end(self) -> None:
+        """After M2/M30 in a ``%`` program rs274 looks for the closing ``%`` in the lines left."""
+        if not self.percent or not self.ended or self.finished:
+            return
+        tape = self.flow.tape
+        rest: list[str | Block] = []
+        if tape is not None and self.flow.frames and self.flow.frames[0].body is tape:
+            rest = tape.lines[self.line - tape.first + 1 :]
+        for entry in rest:
+            if (entry.source if isinstance(entry, Block) else str(entry)).strip() == "%":
+                return
+        for _, raw in self._numbered:
+            if raw.strip() == "%":
+                return
+        self.label = "N..... "
+        self.emit(ops.Comment("interpreter: percent sign missing from end of file"))
+
     def finish_percent(self) -> None:
         """The closing ``%`` of a ``%``-delimited program."""
         self.label = "N..... "
         self.emit(ops.Finish())
-        self.ended = True
+        self.ended = self.finished = True
 
     def checked_line(self, raw: str, number: int) -> str:
         """A line read after the program opened (see :meth:`_checked`)."""
@@ -254,6 +289,9 @@ class Interpreter:
                 for target, value in r.assigns:
                     assign(target, value)
             check(self.state, r)
+            if codes.M_USER in r.m and r.m[codes.M_USER] in (98, 99):
+                self.convert_fanuc(block, r)
+                return
             self.convert(r)
         except NgcError as err:
             raise err.locate(file=self.file, line=block.line, source=block.source) from None
@@ -333,6 +371,21 @@ class Interpreter:
         self.convert_motion(g, r)
         if codes.M_STOP in m:
             program.stop(self, m[codes.M_STOP])
+
+    def convert_fanuc(self, block: Block, r: Resolved) -> None:
+        """M98 calls at once (the rest of its line is not run); M99 runs its line, then returns."""
+        code = r.m[codes.M_USER]
+        if code == 98:
+            self.flow.fanuc(block, 98, r.w.get("p"), r.w.get("l"))
+            return
+        rest = copy.copy(r)
+        rest.m = {group: value for group, value in r.m.items() if group != codes.M_USER}
+        self.convert(rest)
+        in_sub = self.flow.tape is not None and len(self.flow.frames) > 1
+        if in_sub and (rest.g or rest.w or rest.m):
+            raise NgcSemanticError("Bug:  Reached convert_stop() from M99 as subprogram return")
+        if not self.flow.fanuc(block, 99, None, None):
+            program.program_end(self, 2)
 
     def convert_m_before_motion(self, m: dict[int, int], w: dict[str, float]) -> None:
         for group in (codes.M_IO, codes.M_TOOL, codes.M_STATE, codes.M_USER):

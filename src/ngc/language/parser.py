@@ -58,7 +58,7 @@ class Block:
         self.n_number: int | None = None
         self.label = "N..... "
         self.items: list[Item] = []
-        self.oword: object = None
+        self.oword: OWord | None = None
         # The block's words when every value on the line is a constant (read once, reused).
         self.resolved: Words | None = None
 

@@ -9,12 +9,12 @@ inches (rs274's user units); rotary axes are never converted.
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 from ...canon import ops
 from ...errors import NgcSemanticError
 from ...language.codes import AXIS_LETTERS
-from ...language.expressions import cos_degrees, sin_degrees
 from ..parameters import (
     COORD_STRIDE,
     G28_HOME,
@@ -51,7 +51,8 @@ def to_program(st: State, machine: Vec) -> Vec:
 
 
 def rotate(x: float, y: float, degrees: float) -> tuple[float, float]:
-    c, s = cos_degrees(degrees), sin_degrees(degrees)
+    t = math.radians(degrees)
+    c, s = math.cos(t), math.sin(t)
     return x * c - y * s, x * s + y * c
 
 

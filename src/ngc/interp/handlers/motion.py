@@ -13,7 +13,6 @@ from typing import TYPE_CHECKING
 
 from ...canon import ops
 from ...errors import NgcSemanticError
-from ...language.expressions import cos_degrees, sin_degrees
 from . import coordinates
 
 if TYPE_CHECKING:
@@ -56,7 +55,7 @@ def _polar_end(pos: list[float], w: dict[str, float], absolute: bool) -> list[fl
             raise NgcSemanticError(f"Cannot specify both polar coordinate and {letter.upper()} word")
     at_origin = pos[0] == 0.0 and pos[1] == 0.0
     radius = math.hypot(pos[0], pos[1])
-    angle = math.degrees(math.atan2(pos[1], pos[0]))
+    angle = math.atan2(pos[1], pos[0]) * 180.0 / math.pi
     if absolute:
         if "^" not in w and at_origin:
             raise NgcSemanticError("Must specify angle in polar coordinate if at the origin")
@@ -72,8 +71,9 @@ def _polar_end(pos: list[float], w: dict[str, float], absolute: bool) -> list[fl
     end = relative_end(pos, w) if not absolute else [
         pos[0], pos[1], w.get("z", pos[2]), w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])
     ]
-    end[0] = radius * cos_degrees(angle)
-    end[1] = radius * sin_degrees(angle)
+    t = angle * math.pi / 180.0
+    end[0] = radius * math.cos(t)
+    end[1] = radius * math.sin(t)
     return end
 
 

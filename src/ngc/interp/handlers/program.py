@@ -25,7 +25,7 @@ _COMMAND = re.compile(
 # In DEBUG/PRINT/LOG/ABORT text: a format (%d, %f, %.Nf) or a parameter (#123, #<name>); a "%"
 # before a "." that does not start a format is dropped (rs274 does so).
 # The comment formats and the printf format each stands for (%.Nf stands for itself).
-_FORMATS = {"%d": "%.0f", "%f": "%.4f"}
+_FORMATS = MappingProxyType({"%d": "%.0f", "%f": "%.4f"})
 _SUBSTITUTION = re.compile(r"%(?:d|f|\.[0-9]f|(?=\.))|#(?:<[^>]*>|[0-9]+)")
 # rs274 reads a parameter number in a comment as a C long (saturating) and keeps an int of it.
 _LONG_MAX = 2**63 - 1
