@@ -6,7 +6,7 @@ it), with its messages.  Nothing here changes state.
 
 from __future__ import annotations
 
-from ..errors import NgcSemanticError
+from ..errors import NgcSemanticError, NgcSyntaxError
 from ..language import codes
 from ..language.words import Words as Resolved
 from .state import State
@@ -70,6 +70,8 @@ def _check_other_words(r: Resolved, active: int | None, non_modal: int | None) -
     arc = active in _ARC
     g10 = non_modal == 100
     m98 = m.get(codes.M_USER) == 98
+    if m.get(codes.M_USER) == 99 and ("p" in w or "l" in w):
+        raise NgcSyntaxError("Unexpected character after O-word")
     if "i" in w and not (arc or g10):
         raise NgcSemanticError("I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it")
     if "j" in w and not (arc or g10):

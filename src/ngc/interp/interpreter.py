@@ -69,7 +69,7 @@ class Interpreter:
         # The last line control flow read ahead of the streaming loop: (number, text).
         self.last_read = (0, "")
         self.flow = Flow(self)
-        self._numbered: Iterator[tuple[int, str]] = iter(())
+        self.numbered: Iterator[tuple[int, str]] = iter(())
 
     def close(self) -> None:
         """Release what the program opened (the log and probe log files)."""
@@ -119,7 +119,7 @@ class Interpreter:
         self.file = file
         self.ended = self.finished = False
         numbered = enumerate(lines, 1)
-        self._numbered = numbered
+        self.numbered = numbered
         self.last_read = (0, "")
         number, raw = 0, ""
         for number, raw in numbered:
@@ -135,7 +135,8 @@ class Interpreter:
         flow = self.flow
         if not percent:
             self._execute_raw(raw, number)
-            if flow.tape is not None and not flow.run_guarded():
+            if flow.tape is not None and not self.ended:
+                flow.run()
                 self._after_end()
                 return
         if self.ended:
@@ -151,7 +152,8 @@ class Interpreter:
                 return
             if not plain(raw, number):
                 self.execute_line(raw, number)
-                if flow.tape is not None and not flow.run_guarded():
+                if flow.tape is not None and not self.ended:
+                    flow.run()
                     self._after_end()
                     return
             if self.ended:
@@ -169,13 +171,11 @@ class Interpreter:
         if not self.percent or not self.ended or self.finished:
             return
         tape = self.flow.tape
-        rest: list[str | Block] = []
-        if tape is not None and self.flow.frames and self.flow.frames[0].body is tape:
-            rest = tape.lines[self.line - tape.first + 1 :]
-        for entry in rest:
-            if (entry.source if isinstance(entry, Block) else str(entry)).strip() == "%":
-                return
-        for _, raw in self._numbered:
+        if tape is not None and self.flow.frames and self.flow.frames[-1].body is tape:
+            for number in range(self.line + 1, tape.last() + 1):
+                if tape.source(number).strip() == "%":
+                    return
+        for _, raw in self.numbered:
             if raw.strip() == "%":
                 return
         self.label = "N..... "
@@ -244,6 +244,20 @@ class Interpreter:
         except NgcError as err:
             raise err.locate(file=self.file, line=number, source=raw.rstrip()) from None
 
+    def compile_line(self, raw: str, number: int) -> tuple[dict[str, float], int | None, str, str] | Block:
+        """A line read once for running many times: a plain-words tuple or a parsed block."""
+        found = split_plain(raw.replace(" ", "").lower())
+        if found is not None:
+            w, g, digits = found
+            code = None if g is None else _MOTION_BY_VALUE.get(g)
+            if (g is None or code is not None) and (
+                _PLAIN_LETTERS.issuperset(w)
+                or (code in _ARCS and _ARC_LETTERS.issuperset(w))
+            ):
+                label = "N..... " if digits is None else n_label(digits)
+                return (w, code, label, raw.rstrip())
+        return parse_line(raw, number)
+
     def _remember_plain(self, raw: str, words: tuple[dict[str, float], int | None, str]) -> None:
         """Keep recently read plain lines (CAM output repeats its retracts and plunges)."""
         cache = self._plain_lines
@@ -275,7 +289,7 @@ class Interpreter:
         if block.delete and self.state.blocks_deleted:
             return
         if block.oword is not None:
-            self.flow.enter(block, self._numbered)
+            self.flow.enter(block, self.numbered)
             return
         self.label = block.label
         self.line = self.state.line = block.line

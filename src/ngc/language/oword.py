@@ -35,6 +35,8 @@ CONDITION = frozenset({"if", "elseif", "while", "repeat"})
 OPTIONAL_VALUE = frozenset({"return", "endsub"})
 # The keyword of a Fanuc-style numbered program start: ``o100`` alone on its line.
 PROGRAM = ""
+# An o-word line that does nothing (``o<name`` without its ``>``).
+NOTHING = "nothing"
 # Arguments a call may pass (o-code.adoc, "O- Call").
 MAX_ARGS = 30
 

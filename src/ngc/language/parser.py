@@ -14,7 +14,15 @@ from ..errors import NgcError, NgcSyntaxError
 from . import expressions as ex
 from .codes import POLAR_LETTERS
 from .lexer import normalize
-from .oword import CONDITION, KEYWORDS, OPTIONAL_VALUE, PROGRAM, OWord, number_label
+from .oword import (
+    CONDITION,
+    KEYWORDS,
+    NOTHING,
+    OPTIONAL_VALUE,
+    PROGRAM,
+    OWord,
+    number_label,
+)
 from .words import Words, add_word, integer_value
 
 WORD = 0
@@ -85,6 +93,27 @@ def parse_line(raw: str, line: int = 0) -> Block:
             err.column = raw_column(raw, err.column - 1)
         raise err.locate(file=None, line=line, source=source) from None
     return block
+
+
+def skim_oword(raw: str, line: int = 0) -> OWord | None:
+    """The o-word of a line being skipped, read as rs274 reads it then; None if it has none.
+
+    Comments are still checked (an unclosed one is an error); other lines are not read.
+    """
+    try:
+        text = normalize(raw).lstrip("/")
+        if text.startswith("n"):
+            m = _N_WORD.match(text)
+            text = text[m.end() :] if m else text
+        if not text.startswith("o"):
+            return None
+        block = Block(line, raw.rstrip())
+        _Reader(text, block).read_oword(skim=True)
+    except NgcError as err:
+        if err.column is not None:
+            err.column = raw_column(raw, err.column - 1)
+        raise err.locate(file=None, line=line, source=raw.rstrip()) from None
+    return block.oword
 
 
 def _fast(block: Block, text: str) -> bool:
@@ -213,13 +242,21 @@ class _Reader:
             else:
                 raise self.error(f"Bad character '{_show_char(c)}' used")
 
-    def read_oword(self) -> None:
-        """An o-word line: label, keyword, its bracketed values, then comments only."""
+    def read_oword(self, skim: bool = False) -> None:
+        """An o-word line: label, keyword, its bracketed values, then comments only.
+
+        ``skim`` reads a line being skipped the way rs274 does: label and keyword, the bracketed
+        values that are there; a missing bracket or anything after them goes unnoticed.
+        """
         s = self.s
         self.i += 1  # 'o'
         label: str | None = None
         label_expr: ex.Value | None = None
         if s.startswith("<", self.i):
+            if s.find(">", self.i) < 0:
+                self.block.oword = OWord(NOTHING, None, None)
+                self.i = len(s)
+                return
             label = self.read_name()
         else:
             value = self.read_value()
@@ -234,6 +271,14 @@ class _Reader:
             keyword = PROGRAM
         self.i += len(keyword)
         oword = OWord(keyword, label, label_expr)
+        self.block.oword = oword
+        if skim:
+            # Only what a skip may evaluate: a condition, a value at the end of a definition.
+            if keyword in CONDITION or keyword in OPTIONAL_VALUE:
+                if s.startswith("[", self.i):
+                    oword.args.append(self.read_expression())
+            self.i = len(s)
+            return
         if keyword in CONDITION:
             if not s.startswith("[", self.i):
                 raise self.error(f"Left bracket missing after '{keyword}'")
@@ -247,7 +292,6 @@ class _Reader:
         self.skip_comments()
         if self.i < len(s):
             raise self.error("Unexpected character after O-word")
-        self.block.oword = oword
 
     def skip_comments(self) -> None:
         """Comments on an o-word line are read and dropped."""
@@ -340,7 +384,7 @@ class _Reader:
         word = s[self.i : end]
         name = next((f for f in _FUNCTIONS if word.startswith(f)), None)
         if name is None:
-            if len(word) < 2:
+            if not any(f.startswith(s[self.i]) for f in _FUNCTIONS):
                 raise self.error("Unknown word where unary operation could be")
             raise self.error(f"Unknown word starting with {s[self.i]}")
         self.i += len(name)
