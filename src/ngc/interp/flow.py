@@ -25,7 +25,7 @@ rs274's rules, as the reference binary shows them (tests/golden/README.md lists 
 from __future__ import annotations
 
 import os
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, NoReturn
 
 from ..errors import (
@@ -36,7 +36,7 @@ from ..errors import (
     NgcSyntaxError,
 )
 from ..language.expressions import evaluate
-from ..language.oword import MAX_ARGS, NOTHING, PROGRAM, OWord, number_label
+from ..language.oword import KEYWORDS, MAX_ARGS, NOTHING, PROGRAM, OWord, number_label
 from ..language.parser import Block, skim_oword
 
 if TYPE_CHECKING:
@@ -192,6 +192,10 @@ class Flow:
         self.fanuc_enabled = True
         self.max_owords = DEFAULT_MAX_OWORDS
         self.owords_run = 0
+        self.handlers: dict[str, Callable[[Frame, Block, OWord], None]] = {
+            keyword: getattr(self, "_" + (keyword or "program"))
+            for keyword in (*KEYWORDS, PROGRAM, NOTHING)
+        }
 
     # -- running --------------------------------------------------------------------------------
     def enter(self, block: Block, numbered: Iterator[tuple[int, str]]) -> None:
@@ -227,7 +231,16 @@ class Flow:
                     raise err.locate(file=f.body.file, line=number, source=source) from None
             else:
                 block: Block = entry  # type: ignore[assignment]
-                if block.oword is None:
+                fast = block.fast
+                if fast is not None:
+                    it.label = block.label
+                    it.line = st.line = number
+                    try:
+                        fast()
+                    except NgcError as err:
+                        raise err.locate(file=f.body.file, line=number,
+                                         source=block.source) from None
+                elif block.oword is None:
                     execute(block)
                 elif not (block.delete and st.blocks_deleted):
                     self.oword(f, block)
@@ -262,7 +275,7 @@ class Flow:
                 raise NgcRuntimeError(
                     f"More than {self.max_owords} o-word lines run: stopped as a runaway "
                     "(raise the bound with --max-owords if the program is meant to run longer)")
-            getattr(self, "_" + (ow.keyword or "program"))(f, block, ow)
+            self.handlers[ow.keyword](f, block, ow)
         except NgcError as err:
             raise err.locate(file=f.body.file, line=block.line, source=block.source) from None
 
@@ -419,19 +432,24 @@ class Flow:
 
     # -- loops ---------------------------------------------------------------------------------
     def _while(self, f: Frame, block: Block, ow: OWord) -> None:
-        label = self.label(ow)
+        label = ow.label if ow.label is not None else self.label(ow)
         bound = f.labels.get(label)
         if bound is not None and bound[0] == "do" and bound[1] != block.line:
             # The end of a do-while loop.
             if self.condition(ow):
                 f.pc = bound[1] + 1
             return
-        self.bind(f, block, label, "while")
+        if bound is None or bound[1] != block.line:
+            self.bind(f, block, label, "while")
         if not self.condition(ow):
             f.pc = self.jump(f, block, ow, label, ("endwhile",)).line + 1
 
     def _endwhile(self, f: Frame, block: Block, ow: OWord) -> None:
-        f.pc = self.lookup(f, block, self.label(ow), ("while",))[1]
+        label = ow.label if ow.label is not None else self.label(ow)
+        bound = f.labels.get(label)
+        if bound is None or bound[0] != "while":
+            bound = self.lookup(f, block, label, ("while",))
+        f.pc = bound[1]
 
     def _do(self, f: Frame, block: Block, ow: OWord) -> None:
         self.bind(f, block, self.label(ow), "do")

@@ -17,6 +17,7 @@ from ..language import codes
 from ..language.parser import Block, n_label, parse_line, split_plain, words_of
 from ..language.words import FREE_LETTERS, G_BY_VALUE, Words
 from .check import check
+from .compiled import specialise
 from .flow import Flow
 from .handlers import coordinates, modes, motion, program
 from .parameters import Parameters
@@ -256,7 +257,9 @@ class Interpreter:
             ):
                 label = "N..... " if digits is None else n_label(digits)
                 return (w, code, label, raw.rstrip())
-        return parse_line(raw, number)
+        block = parse_line(raw, number)
+        block.fast = specialise(self, block)
+        return block
 
     def _remember_plain(self, raw: str, words: tuple[dict[str, float], int | None, str]) -> None:
         """Keep recently read plain lines (CAM output repeats its retracts and plunges)."""
@@ -302,6 +305,8 @@ class Interpreter:
                 assign = self.params.assign
                 for target, value in r.assigns:
                     assign(target, value)
+                if not (r.g or r.m or r.w) and r.comment is None:
+                    return  # parameter settings only
             check(self.state, r)
             if codes.M_USER in r.m and r.m[codes.M_USER] in (98, 99):
                 self.convert_fanuc(block, r)

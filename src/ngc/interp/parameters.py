@@ -128,13 +128,13 @@ class Parameters:
         return self.numbered[index]
 
     def named(self, name: str) -> float:
-        if name.startswith("_"):
+        if name[:1] != "_":
+            value = self.locals[-1].get(name)
+        else:
             getter = PREDEFINED.get(name)
             if getter is not None:
                 return getter(self.state)
             value = self.globals.get(name)
-        else:
-            value = self.locals[-1].get(name)
         if value is None:
             raise NgcRuntimeError(f"Named parameter #<{name}> not defined")
         return value

@@ -10,6 +10,7 @@ left-associative within their precedence group, comparisons equal within ``TOLER
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Callable
 from fractions import Fraction
 from typing import Protocol
@@ -85,11 +86,11 @@ def _bool(x: bool) -> float:
 
 BINARY: dict[str, Callable[[float, float], float]] = {
     "**": _pow,
-    "*": lambda a, b: a * b,
+    "*": operator.mul,
     "/": _div,
     "mod": _mod,
-    "+": lambda a, b: a + b,
-    "-": lambda a, b: a - b,
+    "+": operator.add,
+    "-": operator.sub,
     "eq": lambda a, b: _bool(abs(a - b) < TOLERANCE_EQUAL),
     "ne": lambda a, b: _bool(abs(a - b) >= TOLERANCE_EQUAL),
     "gt": lambda a, b: _bool(a > b),
@@ -240,8 +241,14 @@ def fold_binary_fn(fn: Callable[[float, float], float], left: Value, right: Valu
             return fn(left, right)
         except NgcRuntimeError:
             pass
-    a = as_expr(left)
-    b = as_expr(right)
+    if isinstance(right, float):
+        a, r = left, right
+        return lambda p: fn(a(p), r)  # type: ignore[operator]
+    if isinstance(left, float):
+        lv, b = left, right
+        return lambda p: fn(lv, b(p))
+    a = left
+    b = right
     return lambda p: fn(a(p), b(p))
 
 

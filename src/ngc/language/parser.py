@@ -9,6 +9,7 @@ messages are rs274's: overview.adoc "Format of a line", "Numbers", "Parameters",
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 from ..errors import NgcError, NgcSyntaxError
 from . import expressions as ex
@@ -57,7 +58,9 @@ def n_label(digits: str | None) -> str:
 class Block:
     """One parsed line.  ``items`` are ``(kind, key, value)`` tuples in source order."""
 
-    __slots__ = ("delete", "items", "label", "line", "n_number", "oword", "resolved", "source")
+    __slots__ = (
+        "delete", "fast", "items", "label", "line", "n_number", "oword", "resolved", "source",
+    )
 
     def __init__(self, line: int, source: str) -> None:
         self.line = line
@@ -69,6 +72,8 @@ class Block:
         self.oword: OWord | None = None
         # The block's words when every value on the line is a constant (read once, reused).
         self.resolved: Words | None = None
+        # A specialised runner for a block run many times (see ngc.interp.compiled).
+        self.fast: Callable[[], None] | None = None
 
 
 def parse_line(raw: str, line: int = 0) -> Block:
@@ -274,9 +279,9 @@ class _Reader:
         self.block.oword = oword
         if skim:
             # Only what a skip may evaluate: a condition, a value at the end of a definition.
-            if keyword in CONDITION or keyword in OPTIONAL_VALUE:
-                if s.startswith("[", self.i):
-                    oword.args.append(self.read_expression())
+            valued = keyword in CONDITION or keyword in OPTIONAL_VALUE
+            if valued and s.startswith("[", self.i):
+                oword.args.append(self.read_expression())
             self.i = len(s)
             return
         if keyword in CONDITION:
