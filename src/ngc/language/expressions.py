@@ -240,7 +240,8 @@ def fold_binary_fn(fn: Callable[[float, float], float], left: Value, right: Valu
         try:
             return fn(left, right)
         except NgcRuntimeError:
-            pass
+            x, y = left, right
+            return lambda p: fn(x, y)
     if isinstance(right, float):
         a, r = left, right
         return lambda p: fn(a(p), r)  # type: ignore[operator]
