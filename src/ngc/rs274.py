@@ -8,13 +8,16 @@ from __future__ import annotations
 
 import getopt
 import io
+import os
 import sys
 from dataclasses import dataclass
 from typing import TextIO
 
 from .canon import ops
 from .canon.text import TextSink
-from .errors import NgcError, NgcOpenError
+from .config.ini import Ini, Rs274ngcSettings
+from .config.varfile import read_var_file, write_var_file
+from .errors import NgcConfigError, NgcError, NgcOpenError
 from .interp.interpreter import Interpreter
 
 USAGE = (
@@ -117,9 +120,21 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
         err.write(f"executing\nUnable to open file {o.program}: {exc.strerror}\n")
         return 1
     err.write("executing\n")
+    settings, ini = _settings(o, err)
     sink = TextSink(out)
     interp = Interpreter(sink, block_delete=o.block_delete)
-    interp.startup()
+    interp.configure(settings, ini)
+    interp.emit(ops.UseLengthUnits("CANON_UNITS_MM"))
+    if o.var_file is not None:
+        try:
+            values = read_var_file(o.var_file)
+        except NgcConfigError as exc:
+            sink.flush()
+            err.write(f"{exc.message}\n\n")
+            return 1
+        interp.load_parameters(values, settings.disable_g92_persistence)
+        _save(o.var_file, interp, err)
+    interp.startup(units=False)
     failed = False
     with handle:
         try:
@@ -138,7 +153,30 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
         interp.emit(ops.OnReset())
     interp.emit(ops.OnReset())
     sink.flush()
+    if o.var_file is not None:
+        _save(o.var_file, interp, err)
     return 1 if failed else 0
+
+
+def _settings(o: Rs274Options, err: TextIO) -> tuple[Rs274ngcSettings, Ini | None]:
+    """The INI file (``-i``) and its settings; rs274 reports an INI file it cannot read."""
+    if o.ini_file is None:
+        return Rs274ngcSettings(), None
+    try:
+        ini = Ini.read(o.ini_file)
+    except (OSError, NgcConfigError):
+        err.write(f"Unable to open inifile:{o.ini_file}:\n")
+        return Rs274ngcSettings(), None
+    settings = Rs274ngcSettings.from_ini(ini, os.getcwd())
+    for message in settings.messages:
+        err.write(f"{message}\n\n")
+    return settings, ini
+
+
+def _save(path: str, interp: Interpreter, err: TextIO) -> None:
+    """Write the parameter file (atomically); rs274 reports a failed link or rename and goes on."""
+    for message in write_var_file(path, interp.params.numbered):
+        err.write(f"{message}\n")
 
 
 def report(err: TextIO, exc: NgcError) -> None:

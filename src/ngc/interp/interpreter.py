@@ -20,12 +20,13 @@ from .check import check
 from .compiled import specialise
 from .flow import Flow
 from .handlers import coordinates, modes, motion, program
-from .parameters import Parameters
+from .parameters import COORD_SYSTEM, G92_APPLIED, Parameters
 from .resolve import Resolved, resolve
 from .state import State
 
 if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
+    from ..config.ini import Ini, Rs274ngcSettings
 
 _new = tuple.__new__
 PLAIN_CACHE_SIZE = 1024
@@ -83,10 +84,28 @@ class Interpreter:
         self.sink.emit(op, self.label, self.line)
 
     # -- program ------------------------------------------------------------------------------
-    def startup(self) -> None:
+    def configure(self, settings: Rs274ngcSettings, ini: Ini | None = None) -> None:
+        """Apply INI settings: the subroutine path, Fanuc-style programs, ``#<_ini[...]...>``."""
+        self.flow.subroutine_path = list(settings.subroutine_path)
+        self.flow.fanuc_enabled = not settings.disable_fanuc_style_sub
+        self.params.ini = ini if settings.ini_vars else None
+
+    def load_parameters(self, values: dict[int, float], disable_g92: bool = False) -> None:
+        """Parameters read from a parameter file, and the origins and offsets they hold."""
+        numbered = self.params.numbered
+        for number, value in values.items():
+            numbered[number] = value
+        if disable_g92:
+            numbered[G92_APPLIED : G92_APPLIED + 10] = [0.0] * 10
+        index = int(numbered[COORD_SYSTEM])
+        coordinates.load_system(self, index if 1 <= index <= 9 else 1)
+        coordinates.load_g92(self)
+
+    def startup(self, units: bool = True) -> None:
         """The canonical calls of interpreter initialisation (rs274 prints them first)."""
         st = self.state
-        self.emit(ops.UseLengthUnits("CANON_UNITS_MM"))
+        if units:
+            self.emit(ops.UseLengthUnits("CANON_UNITS_MM"))
         self.emit(ops.SetG5xOffset(st.coord_index, *st.g5x))
         self.emit(ops.SetG92Offset(*st.g92))
         self.emit(ops.SetXYRotation(st.rotation))

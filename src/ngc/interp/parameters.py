@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from ..config.ini import Ini, ini_parameter
 from ..errors import NgcRuntimeError
 from ..language.parser import MAX_PARAMETER
 from .state import AXES, State
@@ -31,6 +32,8 @@ READ_ONLY = frozenset(range(5400, 5414)) | frozenset(range(5420, 5429))
 IGNORED_WRITES = frozenset({5600, 5601})
 
 Getter = Callable[[State], float]
+# Named parameters that read the INI file: #<_ini[section]name>.
+INI_PREFIX = "_ini["
 
 
 def _flag(attr: str, value: object) -> Getter:
@@ -111,7 +114,7 @@ PREDEFINED: dict[str, Getter] = {
 class Parameters:
     """All parameters of one interpreter; the expression context (``num``/``named``/``exists``)."""
 
-    __slots__ = ("globals", "locals", "numbered", "state")
+    __slots__ = ("globals", "ini", "locals", "numbered", "state")
 
     def __init__(self, state: State) -> None:
         self.state = state
@@ -119,6 +122,8 @@ class Parameters:
         self.numbered[DEBUG_ENABLE] = 1.0
         self.globals: dict[str, float] = {}
         self.locals: list[dict[str, float]] = [{}]
+        # The INI file behind ``#<_ini[section]name>`` (rs274 -i), if any.
+        self.ini: Ini | None = None
 
     # -- reading (expression context) ---------------------------------------------------------
     def num(self, index: int) -> float:
@@ -135,12 +140,16 @@ class Parameters:
             if getter is not None:
                 return getter(self.state)
             value = self.globals.get(name)
+            if value is None and name.startswith(INI_PREFIX):
+                value = ini_parameter(self.ini, name)
         if value is None:
             raise NgcRuntimeError(f"Named parameter #<{name}> not defined")
         return value
 
     def exists(self, name: str) -> bool:
         if name.startswith("_"):
+            if name.startswith(INI_PREFIX) and name not in self.globals:
+                return ini_parameter(self.ini, name) is not None
             return name in PREDEFINED or name in self.globals
         return name in self.locals[-1]
 
@@ -172,6 +181,6 @@ def check_number_writable(index: int) -> None:
 
 
 def check_writable(name: str) -> None:
-    """Predefined named parameters are read-only."""
-    if name in PREDEFINED:
+    """Predefined named parameters and INI values are read-only."""
+    if name in PREDEFINED or name.startswith(INI_PREFIX):
         raise NgcRuntimeError(f"Cannot assign to read-only parameter #<{name}>")

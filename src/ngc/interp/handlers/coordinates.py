@@ -99,6 +99,15 @@ def load_system(it: Interpreter, index: int) -> None:
     st.rotation = numbered[base + 9]
 
 
+def load_g92(it: Interpreter) -> None:
+    """The G92 offsets from their parameters when #5210 says they apply (a parameter file)."""
+    st = it.state
+    numbered = it.params.numbered
+    st.g92_applied = numbered[G92_APPLIED] != 0.0
+    if st.g92_applied:
+        st.g92 = [_from_user(st, i, numbered[G92_OFFSET + i]) for i in range(AXES)]
+
+
 def select_system(it: Interpreter, code: int) -> None:
     """G54..G59.3."""
     index = code // 10 - 53 if code < 591 else code - 584

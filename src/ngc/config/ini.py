@@ -1,0 +1,456 @@
+"""LinuxCNC INI files, read the way ``rs274`` 2.9.0~pre1 reads them.
+
+The syntax (ini-config.adoc, "The INI File Components"), with the details the binary was observed
+to follow where the document is silent or describes a newer reader:
+
+* ``[SECTION]`` starts a section.  Leading blanks are allowed and anything after the ``]`` is
+  ignored (``[S] # note`` is section ``S``); the name is the text between the first ``[`` and the
+  first ``]``, compared case-sensitively (``[ S ]`` is not ``S``).  Only the *first* section of a
+  name is searched: a second ``[VARS]`` block further down is never read.
+* ``NAME = value``: the name is the first word of the line (up to a blank or ``=``) and is compared
+  case-sensitively; whatever follows the name up to the first ``=`` is ignored (``NAME junk = v``
+  reads ``v``).  The value is the rest of the line without leading and trailing blanks.  A line
+  whose name matches but that has no ``=`` ends the search (not found).  The first occurrence of
+  a name wins; an empty value is a value (``""``), and it wins too.
+* A line whose first non-blank character is ``#`` or ``;`` is a comment.  ``#`` and ``;`` inside a
+  value are part of the value (``A = 1 # one`` is ``"1 # one"``).
+* A line ending in ``\\`` right before its newline continues on the next line, which is appended
+  as it is (its leading blanks stay, and a ``[...]`` or comment line is swallowed).  A blank after
+  the backslash, or a CR (``\\`` CR LF), stops the continuation: the backslash is then part of the
+  value.  A continuation with no line after it makes the lookup fail.
+* Any line whose first non-blank character is ``[`` ends the section (even ``[U`` without ``]``).
+* No escapes are decoded (``\\x41`` stays four characters) and quotes are plain characters.
+* CR LF line endings work (rs274 prints :data:`DOS_LINE_ENDINGS_WARNING` once when it opens such a
+  file); a CR anywhere else is "ambiguous": a lookup that has to read across that line fails and
+  rs274 prints :data:`AMBIGUOUS_CR_ERROR` once per such lookup.
+
+``#<_ini[section]name>`` parameters are resolved by :func:`ini_parameter`; the ``[RS274NGC]``
+settings the interpreter uses are collected by :meth:`Rs274ngcSettings.from_ini`.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+from dataclasses import dataclass
+
+from ..errors import NgcConfigError
+
+__all__ = [
+    "AMBIGUOUS_CR_ERROR",
+    "DOS_LINE_ENDINGS_WARNING",
+    "FEATURE_HAL_PIN_VARS",
+    "FEATURE_INI_VARS",
+    "FEATURE_NO_DOWNCASE_OWORD",
+    "FEATURE_OWORD_NARGS",
+    "FEATURE_OWORD_WARNONLY",
+    "FEATURE_RETAIN_G43",
+    "Ini",
+    "Rs274ngcSettings",
+    "ini_parameter",
+    "parse_int",
+    "parse_real",
+]
+
+DOS_LINE_ENDINGS_WARNING = "inifile: warning: File contains DOS-style line endings."
+AMBIGUOUS_CR_ERROR = "inifile: error: File contains ambiguous carriage returns"
+
+# C isspace() in the C locale: what the reader trims around names and values.
+BLANKS = " \t\n\v\f\r"
+_NAME = re.compile(r"[^ \t\n\v\f\r=]*")
+
+# A real number as rs274 accepts it in an INI value: decimal only (``0x10`` is refused), the
+# whole value must be the number (``2.5abc``, ``1e`` are refused), ``inf``/``infinity``/``nan``
+# in any case with an optional sign, and a number too big for a double is refused (``1e400``)
+# while one too small reads as 0 (``1e-400``).
+_REAL = re.compile(
+    r"(?P<sign>[+-]?)(?:(?P<finite>(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)"
+    r"|(?P<inf>inf(?:inity)?)|nan(?:\(.*\))?)",
+    re.IGNORECASE | re.DOTALL,
+)
+# An integer value: decimal digits with an optional sign, within a C int.
+_INT = re.compile(r"[+-]?[0-9]+")
+INT_MIN, INT_MAX = -(2**31), 2**31 - 1
+
+# The ``FEATURES`` bitmask of LinuxCNC before 2.8 (ini-config.adoc, note after [RS274NGC]).  rs274
+# 2.9.0~pre1 ignores FEATURES (observed: FEATURES = 0 leaves #<_ini[...]> working, FEATURES = 2 does
+# not define #<n_args>); the six options are separate INI names now.
+FEATURE_RETAIN_G43 = 0x1
+FEATURE_OWORD_NARGS = 0x2
+FEATURE_INI_VARS = 0x4
+FEATURE_HAL_PIN_VARS = 0x8
+FEATURE_NO_DOWNCASE_OWORD = 0x10
+FEATURE_OWORD_WARNONLY = 0x20
+
+# Center-format arc radius tolerances.  ini-config.adoc gives 0.00005 inch and 0.00127 mm as the
+# defaults; rs274 2.9.0~pre1 was observed to use 0.002*sqrt(2) inch and 0.02*sqrt(2) mm when the INI
+# does not set them (an arc whose end radius differs by 0.0283 mm passes, 0.0284 mm fails), and to
+# refuse INI values outside [0.00004, default] inch and [0.001, default] mm.
+CENTER_ARC_RADIUS_TOLERANCE_INCH = 0.002 * math.sqrt(2.0)
+CENTER_ARC_RADIUS_TOLERANCE_MM = 0.02 * math.sqrt(2.0)
+MIN_CENTER_ARC_RADIUS_TOLERANCE_INCH = 0.00004
+MIN_CENTER_ARC_RADIUS_TOLERANCE_MM = 0.001
+
+# Directory lists: at most this many existing directories are kept (ini-config.adoc, [RS274NGC]).
+SUBROUTINE_PATH_MAX_DIRS = 10
+USER_M_PATH_MAX_DIRS = 5
+
+
+def _body(line: str) -> str:
+    """A physical line without its newline."""
+    return line[:-1] if line.endswith("\n") else line
+
+
+def _ambiguous(line: str) -> bool:
+    """A CR that is not the last character before the newline (or the end of the file)."""
+    return "\r" in _body(line)[:-1]
+
+
+@dataclass(frozen=True, slots=True)
+class Ini:
+    """An INI file's text, searched on each lookup like rs274's reader does.
+
+    >>> ini = Ini.parse("[VARS]\\nX = 10\\nX = 11\\n")
+    >>> ini.get("VARS", "X"), ini.get("VARS", "x"), ini.get("vars", "X")
+    ('10', None, None)
+    """
+
+    lines: tuple[str, ...]
+    """The physical lines, each with its newline when it has one."""
+    path: str | None = None
+
+    @classmethod
+    def read(cls, path: str | os.PathLike[str]) -> Ini:
+        """Read an INI file.
+
+        A file that cannot be opened raises :class:`NgcConfigError` with rs274's text,
+        ``Unable to open inifile:<path>:``; rs274 prints it (after ``executing``), exits 0 if the
+        program is fine and otherwise runs exactly as without ``-i``.  A directory reads as an
+        empty INI file, as it does for rs274 (no message, but it counts as an INI file).
+        """
+        name = os.fspath(path)
+        try:
+            with open(name, "rb") as handle:
+                data = handle.read()
+        except IsADirectoryError:
+            data = b""
+        except OSError as exc:
+            raise NgcConfigError(f"Unable to open inifile:{name}:", file=name) from exc
+        return cls.parse(data.decode("utf-8", "surrogateescape"), path=name)
+
+    @classmethod
+    def parse(cls, text: str, path: str | None = None) -> Ini:
+        """An INI file from its text."""
+        parts = text.split("\n")
+        lines = [part + "\n" for part in parts[:-1]]
+        if parts[-1]:
+            lines.append(parts[-1])
+        return cls(tuple(lines), path)
+
+    @property
+    def dos_line_endings(self) -> bool:
+        """The file has CR LF line endings (rs274 prints :data:`DOS_LINE_ENDINGS_WARNING`)."""
+        return any(_body(line).endswith("\r") for line in self.lines)
+
+    @property
+    def ambiguous_carriage_returns(self) -> bool:
+        """The file has a CR inside a line (see :data:`AMBIGUOUS_CR_ERROR`)."""
+        return any(_ambiguous(line) for line in self.lines)
+
+    def get(self, section: str, name: str) -> str | None:
+        """The value of ``[section]name`` (case-sensitive), or ``None`` when it is not there."""
+        index = self._section_start(section)
+        if index is None:
+            return None
+        while index < len(self.lines):
+            logical = self._logical_line(index)
+            if logical is None:
+                return None
+            text, index = logical
+            stripped = text.lstrip(BLANKS)
+            if stripped.startswith("["):
+                return None
+            if stripped.startswith(("#", ";")):
+                continue
+            key = _NAME.match(stripped)
+            if key is None or key.group() != name:
+                continue
+            equals = stripped.find("=", key.end())
+            if equals < 0:
+                return None
+            return stripped[equals + 1 :].strip(BLANKS)
+        return None
+
+    def _section_start(self, section: str) -> int | None:
+        """The index of the line after the first ``[section]`` header."""
+        for index, line in enumerate(self.lines):
+            if _ambiguous(line):
+                return None
+            stripped = line.lstrip(BLANKS)
+            if stripped.startswith("["):
+                close = stripped.find("]")
+                if close > 0 and stripped[1:close] == section:
+                    return index + 1
+        return None
+
+    def _logical_line(self, index: int) -> tuple[str, int] | None:
+        """The line at ``index`` joined with its continuations, and the index after them."""
+        text = ""
+        while index < len(self.lines):
+            line = self.lines[index]
+            index += 1
+            if _ambiguous(line):
+                return None
+            if not line.endswith("\\\n"):
+                return text + _body(line), index
+            text += line[:-2]
+        return None
+
+
+def parse_real(text: str | None) -> float | None:
+    """An INI value as a real number, or ``None`` when rs274 does not accept it as one.
+
+    >>> parse_real(" 1e3"), parse_real("0x10"), parse_real("2.5abc"), parse_real("1e400")
+    (1000.0, None, None, None)
+    """
+    if text is None:
+        return None
+    text = text.strip(BLANKS)
+    match = _REAL.fullmatch(text)
+    if match is None:
+        return None
+    if match.group("finite") is None:
+        magnitude = math.inf if match.group("inf") else math.nan
+        return math.copysign(magnitude, -1.0 if match.group("sign") == "-" else 1.0)
+    value = float(text)
+    return None if math.isinf(value) else value
+
+
+def parse_int(text: str | None) -> int | None:
+    """An INI value as a C ``int`` (decimal, optional sign), or ``None`` when it is not one.
+
+    >>> parse_int("+01"), parse_int("0x1"), parse_int("1.0"), parse_int("4294967296")
+    (1, None, None, None)
+    """
+    if text is None or _INT.fullmatch(text.strip(BLANKS)) is None:
+        return None
+    value = int(text)
+    return value if INT_MIN <= value <= INT_MAX else None
+
+
+def _ascii_upper(text: str) -> str:
+    """Upper case for ASCII letters only, as C ``toupper`` in the C locale."""
+    return "".join(chr(ord(c) - 32) if "a" <= c <= "z" else c for c in text)
+
+
+def ini_parameter(ini: Ini | None, name: str) -> float | None:
+    """The value of the named parameter ``#<_ini[section]name>``, or ``None`` if it is not defined.
+
+    ``name`` is the parameter name as the reader has it, lower-cased and without ``#<>``:
+    ``"_ini[vars]toolchange_x"``.  rs274 upper-cases section and name before the case-sensitive
+    INI lookup (overview.adoc, "HAL pins and INI values"), so ``[VARS]TOOLCHANGE_X`` is found while
+    ``[Vars]``, ``[vars]`` or ``ToolChange_X`` in the file never are.  A value that is not a real
+    number (:func:`parse_real`) is "not defined" as well: reading it fails with ``Named parameter
+    #<_ini[vars]x> not defined``, ``EXISTS[...]`` gives 0 and ``(debug,...)`` shows ``######``.
+    The caller also answers ``None`` when ``[RS274NGC]INI_VARS`` is off (:class:`Rs274ngcSettings`).
+    The parameters are read-only: assigning one fails with ``Cannot assign to read-only parameter
+    #<_ini[vars]x>``.
+
+    >>> ini = Ini.parse("[VARS]\\nTOOLCHANGE_X = 10\\nMixed = 2\\n")
+    >>> ini_parameter(ini, "_ini[vars]toolchange_x"), ini_parameter(ini, "_ini[vars]mixed")
+    (10.0, None)
+    """
+    if ini is None or not name.startswith("_ini["):
+        return None
+    close = name.find("]")
+    section = _ascii_upper(name[5:close]) if close > 0 else ""
+    if not section:
+        return None
+    return parse_real(ini.get(section, _ascii_upper(name[close + 1 :])))
+
+
+def _search_dirs(value: str | None, cwd: str, limit: int) -> tuple[str, ...]:
+    """A colon-separated directory list: relative entries are taken from ``cwd`` (not from the
+    INI file's directory), empty and non-existent entries are dropped, ``limit`` are kept."""
+    dirs: list[str] = []
+    for entry in (value or "").split(":"):
+        if not entry:
+            continue
+        try:
+            dirs.append(os.path.realpath(os.path.join(cwd, entry), strict=True))
+        except OSError:
+            continue
+        if len(dirs) == limit:
+            break
+    return tuple(dirs)
+
+
+def _switch(ini: Ini, section: str, name: str) -> bool:
+    """An integer option that is on when non-zero; not an integer (``yes``, ``0x1``, ``1.0``): off."""
+    return bool(parse_int(ini.get(section, name)))
+
+
+def _flag(ini: Ini, name: str, default: bool) -> bool:
+    """One of the six former FEATURES options: ``0`` or ``1``; anything else keeps the default
+    (``OWORD_NARGS = 2`` is off, ``INI_VARS = 2`` stays on)."""
+    value = parse_int(ini.get("RS274NGC", name))
+    return default if value not in (0, 1) else value == 1
+
+
+def _string(ini: Ini, section: str, name: str) -> str | None:
+    """A text value; an empty value counts as not set."""
+    return ini.get(section, name) or None
+
+
+def _real(ini: Ini, name: str, default: float) -> float:
+    value = parse_real(ini.get("RS274NGC", name))
+    return default if value is None else value
+
+
+def _tolerance(ini: Ini, name: str, low: float, default: float, messages: list[str]) -> float:
+    """A radius tolerance: rs274 reports a value it refuses and keeps the default."""
+    text = ini.get("RS274NGC", name)
+    if not text:
+        return default
+    value = parse_real(text)
+    if value is None or value < low or value > default:
+        messages.append(f"invalid [RS274NGC]{name} in INI file")
+        return default
+    return value
+
+
+@dataclass(frozen=True, slots=True)
+class Rs274ngcSettings:
+    """The INI settings that change what the interpreter does, with rs274's defaults.
+
+    ``Rs274ngcSettings()`` is what rs274 uses without ``-i`` (or with an INI it cannot open).
+    Fields marked *not read by rs274* are documented LinuxCNC options that rs274 2.9.0~pre1 does
+    not consult (observed); they are parsed so that a user's INI file is not silently lost.
+    """
+
+    subroutine_path: tuple[str, ...] = ()
+    """[RS274NGC]SUBROUTINE_PATH: ``:``-separated; relative to the current directory; entries that
+    do not exist are dropped and at most 10 existing directories are searched."""
+    program_prefix: str | None = None
+    """[DISPLAY]PROGRAM_PREFIX, as written (rs274 looks it up)."""
+    orient_offset: float = 0.0
+    """[RS274NGC]ORIENT_OFFSET, added to M19 R; a value that is not a real number reads as 0."""
+    center_arc_radius_tolerance_inch: float = CENTER_ARC_RADIUS_TOLERANCE_INCH
+    """[RS274NGC]CENTER_ARC_RADIUS_TOLERANCE_INCH; a refused value is reported in ``messages``."""
+    center_arc_radius_tolerance_mm: float = CENTER_ARC_RADIUS_TOLERANCE_MM
+    """[RS274NGC]CENTER_ARC_RADIUS_TOLERANCE_MM; a refused value is reported in ``messages``."""
+    disable_g92_persistence: bool = False
+    """[RS274NGC]DISABLE_G92_PERSISTENCE: non-zero integer = on; #5210-#5219 are zeroed after the
+    parameter file is read (and so are written back as zeros)."""
+    disable_fanuc_style_sub: bool = False
+    """[RS274NGC]DISABLE_FANUC_STYLE_SUB: non-zero integer = on; M98 then fails with
+    ``DISABLE_FANUC_STYLE_SUB set in INI file, but found m98``."""
+    retain_g43: bool = False
+    """[RS274NGC]RETAIN_G43 (0/1, anything else keeps the default)."""
+    oword_nargs: bool = False
+    """[RS274NGC]OWORD_NARGS (0/1): a called subroutine gets ``#<n_args>``."""
+    ini_vars: bool = True
+    """[RS274NGC]INI_VARS (0/1): ``#<_ini[section]name>`` parameters are defined."""
+    hal_pin_vars: bool = True
+    """[RS274NGC]HAL_PIN_VARS (0/1)."""
+    no_downcase_oword: bool = False
+    """[RS274NGC]NO_DOWNCASE_OWORD (0/1)."""
+    oword_warnonly: bool = False
+    """[RS274NGC]OWORD_WARNONLY (0/1; rs274 2.9.0~pre1 crashes on some O-word errors when it is 1)."""
+    tool_change_quill_up: bool = False
+    """[EMCIO]TOOL_CHANGE_QUILL_UP (non-zero = on): M6 first rapids Z to machine 0."""
+    tool_change_at_g30: bool = False
+    """[EMCIO]TOOL_CHANGE_AT_G30 (non-zero = on): M6 first rapids to the G30 position."""
+    tool_change_with_spindle_on: bool = False
+    """[EMCIO]TOOL_CHANGE_WITH_SPINDLE_ON (non-zero = on): M6 does not stop the spindle."""
+    random_toolchanger: bool = False
+    """[EMCIO]RANDOM_TOOLCHANGER (non-zero = on)."""
+    log_level: int = 0
+    """[RS274NGC]LOG_LEVEL."""
+    log_file: str | None = None
+    """[RS274NGC]LOG_FILE: rs274 creates (truncates) this file, relative to the current directory."""
+    on_abort_command: str | None = None
+    """[RS274NGC]ON_ABORT_COMMAND, as written."""
+    features: int | None = None
+    """[RS274NGC]FEATURES (``FEATURE_*`` bits); not read by rs274 2.9.0~pre1."""
+    user_m_path: tuple[str, ...] = ()
+    """[RS274NGC]USER_M_PATH, resolved like SUBROUTINE_PATH (5 directories); not read by rs274,
+    which reports M100-M199 as ``Unknown m code used``."""
+    parameter_file: str | None = None
+    """[RS274NGC]PARAMETER_FILE; not read by rs274 (only ``-v`` names a parameter file)."""
+    startup_code: str | None = None
+    """[RS274NGC]RS274NGC_STARTUP_CODE; not read by rs274."""
+    g64_default_tolerance: float = 0.0
+    """[RS274NGC]G64_DEFAULT_TOLERANCE; not read by rs274."""
+    g64_default_naivetolerance: float = 0.0
+    """[RS274NGC]G64_DEFAULT_NAIVETOLERANCE; not read by rs274."""
+    disable_auto_g54: bool = False
+    """[RS274NGC]DISABLE_AUTO_G54; not read by rs274 (M2/M30 always return to G54)."""
+    g73_peck_clearance: float | None = None
+    """[RS274NGC]G73_PECK_CLEARANCE in machine units; not read by rs274."""
+    g83_peck_clearance: float | None = None
+    """[RS274NGC]G83_PECK_CLEARANCE in machine units; not read by rs274."""
+    messages: tuple[str, ...] = ()
+    """What rs274 reports about the settings while it starts, in order.  rs274 prints each one as
+    an error report with an empty source line (``message`` newline, newline) and carries on."""
+
+    @classmethod
+    def from_ini(cls, ini: Ini | None, cwd: str) -> Rs274ngcSettings:
+        """The settings of ``ini`` (``None``: rs274's defaults); ``cwd`` anchors relative paths.
+
+        >>> s = Rs274ngcSettings.from_ini(Ini.parse("[RS274NGC]\\nORIENT_OFFSET = 42\\n"), ".")
+        >>> s.orient_offset, s.ini_vars, s.oword_nargs
+        (42.0, True, False)
+        """
+        if ini is None:
+            return cls()
+        messages: list[str] = []
+        inch = _tolerance(
+            ini,
+            "CENTER_ARC_RADIUS_TOLERANCE_INCH",
+            MIN_CENTER_ARC_RADIUS_TOLERANCE_INCH,
+            CENTER_ARC_RADIUS_TOLERANCE_INCH,
+            messages,
+        )
+        mm = _tolerance(
+            ini,
+            "CENTER_ARC_RADIUS_TOLERANCE_MM",
+            MIN_CENTER_ARC_RADIUS_TOLERANCE_MM,
+            CENTER_ARC_RADIUS_TOLERANCE_MM,
+            messages,
+        )
+        return cls(
+            subroutine_path=_search_dirs(
+                ini.get("RS274NGC", "SUBROUTINE_PATH"), cwd, SUBROUTINE_PATH_MAX_DIRS
+            ),
+            program_prefix=_string(ini, "DISPLAY", "PROGRAM_PREFIX"),
+            orient_offset=_real(ini, "ORIENT_OFFSET", 0.0),
+            center_arc_radius_tolerance_inch=inch,
+            center_arc_radius_tolerance_mm=mm,
+            disable_g92_persistence=_switch(ini, "RS274NGC", "DISABLE_G92_PERSISTENCE"),
+            disable_fanuc_style_sub=_switch(ini, "RS274NGC", "DISABLE_FANUC_STYLE_SUB"),
+            retain_g43=_flag(ini, "RETAIN_G43", False),
+            oword_nargs=_flag(ini, "OWORD_NARGS", False),
+            ini_vars=_flag(ini, "INI_VARS", True),
+            hal_pin_vars=_flag(ini, "HAL_PIN_VARS", True),
+            no_downcase_oword=_flag(ini, "NO_DOWNCASE_OWORD", False),
+            oword_warnonly=_flag(ini, "OWORD_WARNONLY", False),
+            tool_change_quill_up=_switch(ini, "EMCIO", "TOOL_CHANGE_QUILL_UP"),
+            tool_change_at_g30=_switch(ini, "EMCIO", "TOOL_CHANGE_AT_G30"),
+            tool_change_with_spindle_on=_switch(ini, "EMCIO", "TOOL_CHANGE_WITH_SPINDLE_ON"),
+            random_toolchanger=_switch(ini, "EMCIO", "RANDOM_TOOLCHANGER"),
+            log_level=parse_int(ini.get("RS274NGC", "LOG_LEVEL")) or 0,
+            log_file=_string(ini, "RS274NGC", "LOG_FILE"),
+            on_abort_command=_string(ini, "RS274NGC", "ON_ABORT_COMMAND"),
+            features=parse_int(ini.get("RS274NGC", "FEATURES")),
+            user_m_path=_search_dirs(ini.get("RS274NGC", "USER_M_PATH"), cwd, USER_M_PATH_MAX_DIRS),
+            parameter_file=_string(ini, "RS274NGC", "PARAMETER_FILE"),
+            startup_code=_string(ini, "RS274NGC", "RS274NGC_STARTUP_CODE"),
+            g64_default_tolerance=_real(ini, "G64_DEFAULT_TOLERANCE", 0.0),
+            g64_default_naivetolerance=_real(ini, "G64_DEFAULT_NAIVETOLERANCE", 0.0),
+            disable_auto_g54=_switch(ini, "RS274NGC", "DISABLE_AUTO_G54"),
+            g73_peck_clearance=parse_real(ini.get("RS274NGC", "G73_PECK_CLEARANCE")),
+            g83_peck_clearance=parse_real(ini.get("RS274NGC", "G83_PECK_CLEARANCE")),
+            messages=tuple(messages),
+        )

@@ -1,0 +1,348 @@
+"""The parameter file (``rs274 -v file.var``), read and written byte for byte like rs274 2.9.0~pre1.
+
+The format (overview.adoc, "Numbered Parameters Persistence"): one parameter per line, its number
+and its value.  rs274 writes ``"%d\\t%f\\n"`` (``5161\\t0.000000``), in ascending order, for the
+required parameters (:data:`REQUIRED_PARAMETERS`) and every other parameter the old file listed,
+with the values the interpreter holds when it saves.  Parameters set by a program but absent from
+the file are not written.  Without ``-v`` rs274 reads and writes no parameter file at all
+(``[RS274NGC]PARAMETER_FILE`` is not consulted).
+
+Reading (:func:`read_var_file`) follows C ``sscanf(line, "%d %lf")`` on lines read with a 256-byte
+buffer (observed):
+
+* A line that does not start with an integer followed by a number is skipped silently (blank
+  lines, comments, ``5161``, ``5161 abc``, ``abc 1``).  Anything after the number is ignored
+  (``5161 1 # note``), the number may be glued to the value (``5161-1`` is -1, and ``5161.5 1``
+  is #5161 = 0.5), hexadecimal values, ``inf`` and ``nan`` are read, ``1e`` reads as 1.
+* A line longer than 255 bytes is read in pieces of 255 bytes, each piece parsed as a line.
+* A number outside 1..5601 stops rs274 with ``Parameter number out of range``; a number not
+  greater than the previous one with ``Parameter file out of order``; a file that exists but
+  cannot be opened with ``Unable to open parameter file: '<path>'``.  In each case rs274 has
+  printed only ``USE_LENGTH_UNITS(CANON_UNITS_MM)``; it reports the message and an empty line,
+  writes nothing and exits 1.
+* A file that does not exist is an empty parameter file (no message); so is a directory.
+
+Saving (:func:`write_var_file`) happens twice in rs274: once right after the file is read (before
+the program is opened) and once at exit (also when the program failed, but not when the program
+file could not be opened).  Each save writes ``<path>.new``, replaces ``<path>.bak`` by a hard link
+to the old file and renames the new file over ``<path>``; a failing link or rename is reported
+(``link (updating variable file): <reason>``) and the run goes on, a ``.new`` file that cannot be
+created makes the save do nothing, silently.  The old file is read again at each save to know which
+numbers it lists, this time with a 4096-byte buffer.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import os
+import re
+import secrets
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+
+from ..errors import NgcConfigError
+
+__all__ = [
+    "PARAMETER_MAX",
+    "PARAMETER_MIN",
+    "REQUIRED_PARAMETERS",
+    "format_var_file",
+    "parse_var_file",
+    "persistent_numbers",
+    "read_var_file",
+    "write_var_file",
+]
+
+PARAMETER_MIN, PARAMETER_MAX = 1, 5601
+
+# The parameters every saved file lists (the "persistent range" of overview.adoc, "Parameters";
+# observed: an empty file is saved as exactly these 119 lines):
+REQUIRED_PARAMETERS: tuple[int, ...] = (
+    *range(5161, 5170),  # G28 home, X Y Z A B C U V W
+    *range(5181, 5190),  # G30 home, X .. W
+    *range(5210, 5221),  # 5210 G92 applied, 5211-5219 G92 offset X .. W, 5220 coordinate system 1-9
+    # G54 .. G59.3: X .. W at 5221 + 20 * k .. 5229 + 20 * k, XY rotation R at 5230 + 20 * k
+    *(number for base in range(5221, 5382, 20) for number in range(base, base + 10)),
+)
+
+OUT_OF_RANGE = "Parameter number out of range"
+OUT_OF_ORDER = "Parameter file out of order"
+
+# rs274 reads the file with fgets() into 256 bytes when it loads it, into 4096 when it saves.
+LOAD_PIECE = 255
+SAVE_PIECE = 4095
+WRITE_BLOCK = 1 << 16
+
+_SPACE = rb"[ \t\n\v\f\r]*"
+_INTEGER = re.compile(_SPACE + rb"([+-]?[0-9]+)")
+# What C scanf("%lf") takes from the text (glibc, observed): at least one digit or a hexadecimal
+# prefix followed by a hex digit or point; an exponent without digits is ignored ("1e" is 1).
+_DOUBLE = re.compile(
+    _SPACE
+    + rb"(?P<sign>[+-]?)(?:(?P<inf>infinity|inf(?![iI]))|(?P<nan>nan)"
+    + rb"|0[xX](?P<hex>[0-9a-fA-F]*)(?:\.(?P<hexfrac>[0-9a-fA-F]*))?(?:[pP](?P<hexexp>[+-]?[0-9]*))?"
+    + rb"|(?P<dec>[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE](?P<exp>[+-]?[0-9]*))?)",
+    re.IGNORECASE,
+)
+_LONG_MIN, _LONG_MAX = -(2**63), 2**63 - 1
+
+
+def _pieces(data: bytes, size: int) -> Iterator[bytes]:
+    """The successive results of ``fgets(buffer, size + 1, file)``."""
+    start = 0
+    while start < len(data):
+        newline = data.find(b"\n", start, start + size)
+        stop = start + size if newline < 0 else newline + 1
+        yield data[start:stop]
+        start = stop
+
+
+def _exponent(text: bytes | None) -> int:
+    """An exponent as scanf takes it: a sign without digits counts as no exponent."""
+    return int(text) if text and text.lstrip(b"+-") else 0
+
+
+def _scan_double(line: bytes, position: int) -> float | None:
+    """``%lf`` at ``position``: the value, or ``None`` when no number is there."""
+    match = _DOUBLE.match(line, position)
+    if match is None:
+        return None
+    if match.group("inf") or match.group("nan"):
+        magnitude = math.inf if match.group("inf") else math.nan
+    elif match.group("dec") is not None:
+        magnitude = float(match.group("dec") + b"e%d" % _exponent(match.group("exp")))
+    else:
+        whole, fraction = match.group("hex"), match.group("hexfrac") or b""
+        if not whole and match.group("hexfrac") is None:
+            return None  # "0x" not followed by a hexadecimal digit or point
+        exponent = _exponent(match.group("hexexp"))
+        try:
+            magnitude = float.fromhex(f"0x{whole.decode() or '0'}.{fraction.decode()}p{exponent}")
+        except OverflowError:
+            magnitude = math.inf
+    return math.copysign(magnitude, -1.0 if match.group("sign") == b"-" else 1.0)
+
+
+def _c_int(value: int) -> int:
+    """What ``%d`` stores: the number as a C long (saturated), truncated to a 32-bit int."""
+    value = min(max(value, _LONG_MIN), _LONG_MAX)
+    return (value + 2**31) % 2**32 - 2**31
+
+
+def _scan_line(line: bytes) -> tuple[int, float] | None:
+    """``sscanf(line, "%d %lf")`` when it converts both, else ``None``."""
+    line = line.split(b"\0", 1)[0]
+    number = _INTEGER.match(line)
+    if number is None:
+        return None
+    value = _scan_double(line, number.end())
+    return None if value is None else (_c_int(int(number.group(1))), value)
+
+
+def _config_error(message: str, path: str | None) -> NgcConfigError:
+    # rs274 reports these like a program error whose source line is empty.
+    return NgcConfigError(message, file=path, source="")
+
+
+def _walk(data: bytes, piece: int, path: str | None) -> dict[int, float]:
+    """Parse like rs274 with a ``piece + 1``-byte line buffer; raise on a number it refuses."""
+    values: dict[int, float] = {}
+    previous = 0
+    for line in _pieces(data, piece):
+        parsed = _scan_line(line)
+        if parsed is None:
+            continue
+        number, value = parsed
+        if not PARAMETER_MIN <= number <= PARAMETER_MAX:
+            raise _config_error(OUT_OF_RANGE, path)
+        if previous == PARAMETER_MAX:
+            continue  # rs274's table is full: later lines are only range-checked
+        if number <= previous:
+            raise _config_error(OUT_OF_ORDER, path)
+        values[number] = value
+        previous = number
+    return values
+
+
+def parse_var_file(data: bytes, path: str | None = None) -> dict[int, float]:
+    """The parameters a parameter file's bytes set, in ascending order (see the module docstring).
+
+    >>> parse_var_file(b"# note\\n31 1.5\\n5161\\t-2 mm\\nbad\\n")
+    {31: 1.5, 5161: -2.0}
+    """
+    return _walk(data, LOAD_PIECE, path)
+
+
+def read_var_file(path: str | os.PathLike[str]) -> dict[int, float]:
+    """The parameters set by the file at ``path``; ``{}`` when it does not exist or is a directory.
+
+    Raises :class:`NgcConfigError` with rs274's message (``Parameter number out of range``,
+    ``Parameter file out of order``, ``Unable to open parameter file: '<path>'``) and ``source``
+    ``""``: rs274 prints the message, then an empty line, and exits 1 without running the program.
+    """
+    name = os.fspath(path)
+    if not os.path.exists(name):
+        return {}
+    try:
+        with open(name, "rb") as handle:
+            data = handle.read()
+    except IsADirectoryError:
+        return {}
+    except OSError as exc:
+        raise _config_error(f"Unable to open parameter file: '{name}'", name) from exc
+    return parse_var_file(data, name)
+
+
+def persistent_numbers(kept: Iterable[int]) -> list[int]:
+    """The numbers a save writes: :data:`REQUIRED_PARAMETERS` and ``kept``, ascending.
+
+    >>> persistent_numbers([31, 5161])[:3], len(persistent_numbers([]))
+    ([31, 5161, 5162], 119)
+    """
+    wanted = {n for n in kept if PARAMETER_MIN <= n <= PARAMETER_MAX}
+    return sorted(wanted.union(REQUIRED_PARAMETERS))
+
+
+def _c_float(value: float) -> str:
+    """C ``printf("%f")``, including glibc's ``-nan``."""
+    if math.isnan(value):
+        return "-nan" if math.copysign(1.0, value) < 0 else "nan"
+    return f"{value:f}"
+
+
+def format_var_file(numbered: Sequence[float] | Mapping[int, float], numbers: Iterable[int]) -> bytes:
+    """The bytes rs274 writes for ``numbers`` (ascending) with the values in ``numbered``.
+
+    ``numbered`` is indexed by parameter number: the interpreter's array, or a mapping in which a
+    missing number reads 0.
+
+    >>> format_var_file({5161: 1.0, 5162: -0.0}, [5161, 5162, 5163])
+    b'5161\\t1.000000\\n5162\\t-0.000000\\n5163\\t0.000000\\n'
+    """
+    if isinstance(numbered, Mapping):
+        text = "".join(f"{n}\t{_c_float(numbered.get(n, 0.0))}\n" for n in numbers)
+    else:
+        text = "".join(f"{n}\t{_c_float(numbered[n])}\n" for n in numbers)
+    return text.encode("ascii")
+
+
+def _saved_numbers(path: str) -> list[int] | None:
+    """The numbers of the old file that a save keeps, or ``None`` when rs274 abandons the save.
+
+    rs274 reads the old file again, with 4096-byte lines, while it writes the new one; a number out
+    of range or out of order there (possible only where long lines are cut differently than at
+    load time) makes it stop writing, silently, and keep the old file.
+    """
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read()
+    except OSError:
+        return []
+    try:
+        return list(_walk(data, SAVE_PIECE, path))
+    except NgcConfigError:
+        return None
+
+
+def _reason(exc: OSError) -> str:
+    return os.strerror(exc.errno) if exc.errno else str(exc)
+
+
+def _create_temp(path: str) -> tuple[int, str]:
+    """A new file next to ``path``, created 0666 less the umask like rs274's ``<path>.new``."""
+    while True:
+        temp = f"{path}.{secrets.token_hex(6)}.new"
+        try:
+            return os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666), temp
+        except FileExistsError:
+            continue
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    """Write ``data``, flush it to the disk and close ``fd``."""
+    try:
+        view = memoryview(data)
+        while view:
+            view = view[os.write(fd, view[:WRITE_BLOCK]) :]
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
+def _remove(path: str) -> None:
+    with contextlib.suppress(OSError):
+        os.unlink(path)
+
+
+def _backup(path: str) -> list[str]:
+    """``<path>.bak`` becomes a hard link to the current file (rs274 reports a failed link)."""
+    backup = path + ".bak"
+    _remove(backup)
+    try:
+        os.link(path, backup)
+    except OSError as exc:
+        return [f"link (updating variable file): {_reason(exc)}"]
+    return []
+
+
+def _sync_directory(path: str) -> None:
+    """Make the rename durable; not every system can open a directory, which is harmless."""
+    try:
+        fd = os.open(os.path.dirname(os.path.abspath(path)), os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        with contextlib.suppress(OSError):
+            os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
+def write_var_file(
+    path: str | os.PathLike[str],
+    numbered: Sequence[float] | Mapping[int, float],
+    kept: Iterable[int] | None = None,
+    *,
+    backup: bool = True,
+) -> list[str]:
+    """Save the parameters like rs274 does, atomically; return what rs274 prints on stderr.
+
+    The file lists :data:`REQUIRED_PARAMETERS` and the numbers in ``kept`` with their values in
+    ``numbered``.  ``kept=None`` does what rs274 does: it reads the numbers from the file being
+    replaced (after a successful :func:`read_var_file`, that is the keys it returned).
+
+    The new content goes to a temporary file in the same directory, is flushed and fsync'ed, and
+    is renamed over ``path``, so an interrupted save leaves the old file whole.  With ``backup``,
+    ``<path>.bak`` is first made a hard link to the old file, as rs274 does.  Failures are not
+    raised: a temporary file that cannot be created means nothing happens (rs274 is silent too);
+    a failed link, rename or write returns its message, e.g. ``["link (updating variable file):
+    No such file or directory"]`` when ``path`` did not exist yet.  The temporary file never
+    outlives a failure.  (Where rs274 would rename a partly written file over the old one after a
+    failed write, this keeps the old file and reports ``write (updating variable file): ...``.)
+    """
+    name = os.fspath(path)
+    if kept is None:
+        kept = _saved_numbers(name)
+        if kept is None:
+            return []
+    data = format_var_file(numbered, persistent_numbers(kept))
+    try:
+        fd, temp = _create_temp(name)
+    except OSError:
+        return []
+    try:
+        _write_all(fd, data)
+    except OSError as exc:
+        _remove(temp)
+        return [f"write (updating variable file): {_reason(exc)}"]
+    except BaseException:
+        _remove(temp)
+        raise
+    messages = _backup(name) if backup else []
+    try:
+        os.replace(temp, name)
+    except OSError as exc:
+        _remove(temp)
+        return [*messages, f"rename (updating variable file): {_reason(exc)}"]
+    _sync_directory(name)
+    return messages

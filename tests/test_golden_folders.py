@@ -1,0 +1,85 @@
+"""Golden folder cases: ``tests/golden/folders/<name>/`` with rs274's recorded results.
+
+Each case folder holds its input files (programs, subroutine files, INI, var files), a
+``case.json`` with the command line, and rs274's ``expected.out`` / ``expected.err`` /
+``expected.rc`` plus ``expected.files/`` (every file the run created or changed, byte for
+byte).  The inputs are copied into a temporary folder, ``ngc rs274 <args>`` runs in-process
+there, and stdout (without the counter column), stderr lines other than ``executing``, the exit
+code and the created/changed files are compared.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+
+from ngc import rs274
+
+FOLDERS = Path(__file__).parent / "golden" / "folders"
+COUNTER = re.compile(r"^ *[0-9]+ ")
+FILES_DIR = "expected.files"
+
+
+def normalize(text: str) -> str:
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    return "".join(COUNTER.sub("", line, count=1) + "\n" for line in lines)
+
+
+def messages(text: str) -> list[str]:
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    return [line for line in lines if line != "executing"]
+
+
+def is_input(rel: Path) -> bool:
+    first = rel.parts[0]
+    return first != "case.json" and not first.startswith("expected.")
+
+
+def snapshot(root: Path) -> dict[str, bytes]:
+    return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+
+
+def _cases() -> list[str]:
+    return sorted(p.parent.name for p in FOLDERS.glob("*/case.json"))
+
+
+@pytest.mark.parametrize("name", _cases())
+def test_golden_folder(name: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    case = FOLDERS / name
+    args = json.loads((case / "case.json").read_text())["args"]
+    work = tmp_path / "work"
+    work.mkdir()
+    for src in sorted(case.rglob("*")):
+        src_rel = src.relative_to(case)
+        if src.is_file() and is_input(src_rel):
+            (work / src_rel).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(src, work / src_rel)
+    before = snapshot(work)
+    monkeypatch.chdir(work)
+    out, err = io.StringIO(), io.StringIO()
+    rc = rs274.run(list(args), stdout=out, stderr=err)
+    after = snapshot(work)
+
+    expected_out = (case / "expected.out").read_text(encoding="latin-1")
+    expected_err = (case / "expected.err").read_text(encoding="latin-1")
+    expected_rc = int((case / "expected.rc").read_text())
+    expected_files = snapshot(case / FILES_DIR) if (case / FILES_DIR).is_dir() else {}
+    changed = {path: data for path, data in after.items() if before.get(path) != data}
+
+    assert messages(err.getvalue()) == messages(expected_err)
+    assert normalize(out.getvalue()) == expected_out
+    assert rc == expected_rc
+    assert sorted(set(before) - set(after)) == [], "input files deleted"
+    assert sorted(changed) == sorted(expected_files), "created/changed files"
+    for path, data in expected_files.items():
+        # latin-1 maps bytes 1:1, so this is a byte comparison with a readable diff
+        assert changed[path].decode("latin-1") == data.decode("latin-1"), f"contents of {path}"
