@@ -121,7 +121,25 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
         return 1
     err.write("executing\n")
     settings, ini = _settings(o, err)
-    sink = TextSink(out)
+    transcript: TextIO | None = None
+    if o.output is not None:
+        try:
+            transcript = open(o.output, "w", encoding="latin-1", newline="\n")  # noqa: SIM115
+        except OSError as exc:
+            err.write(f"Unable to open output file {o.output}: {exc.strerror}\n")
+            handle.close()
+            return 1
+    try:
+        return _interpret(o, handle, settings, ini, out if transcript is None else transcript,
+                          None if transcript is None else out, err)
+    finally:
+        if transcript is not None:
+            transcript.close()
+
+
+def _interpret(o: Rs274Options, handle: TextIO, settings: Rs274ngcSettings, ini: Ini | None,
+               out: TextIO, prints: TextIO | None, err: TextIO) -> int:
+    sink = TextSink(out, prints)
     interp = Interpreter(sink, block_delete=o.block_delete)
     interp.configure(settings, ini)
     interp.emit(ops.UseLengthUnits("CANON_UNITS_MM"))
@@ -149,7 +167,7 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
             sink.flush()
             report(err, exc)
     interp.label = "N..... "
-    if o.ini_file is None:
+    if ini is None:
         interp.emit(ops.OnReset())
     interp.emit(ops.OnReset())
     sink.flush()

@@ -87,9 +87,9 @@ def child_env(home: Path) -> dict[str, str]:
 
 
 def is_input(rel: Path) -> bool:
-    """True for the case's input files (not case.json, not the expected.* results)."""
+    """True for the case's input files (not case.json, the expected.* results or ngc.files)."""
     first = rel.parts[0]
-    return first != "case.json" and not first.startswith("expected.")
+    return first not in ("case.json", "ngc.files") and not first.startswith("expected.")
 
 
 def snapshot(root: Path) -> dict[str, bytes]:

@@ -16,12 +16,15 @@ class TextSink:
     Lines are collected and written in batches (``flush`` writes the rest; call it at the end).
     """
 
-    __slots__ = ("_count", "_lines", "_stream", "_templates")
+    __slots__ = ("_count", "_lines", "_prints", "_stream", "_templates")
 
     BATCH_MASK = 4095  # write every 4096 operations
 
-    def __init__(self, stream: TextIO) -> None:
+    def __init__(self, stream: TextIO, prints: TextIO | None = None) -> None:
+        """``prints``: where ``(print,...)`` text goes when not into the transcript (rs274's stdout
+        when the transcript goes to an output file)."""
         self._stream = stream
+        self._prints = prints
         self._lines: list[str] = []
         self._count = 0
         self._templates: dict[type, str] = {}
@@ -37,7 +40,10 @@ class TextSink:
             self.flush()
 
     def print_text(self, text: str) -> None:
-        self._lines.append(text + "\n")
+        if self._prints is not None:
+            self._prints.write(text + "\n")
+        else:
+            self._lines.append(text + "\n")
 
     def flush(self) -> None:
         """Write what is collected."""

@@ -549,7 +549,7 @@ class Flow:
         """``<label>.ngc`` in the working directory or a folder of the subroutine path."""
         name = label + ".ngc"
         for folder in (".", *self.subroutine_path):
-            path = os.path.join(folder, name)
+            path = name if folder == "." else os.path.join(folder, name)
             if os.path.isfile(path):
                 return path
         return None

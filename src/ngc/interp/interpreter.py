@@ -100,6 +100,7 @@ class Interpreter:
         index = int(numbered[COORD_SYSTEM])
         coordinates.load_system(self, index if 1 <= index <= 9 else 1)
         coordinates.load_g92(self)
+        self.state.pos = coordinates.to_program(self.state, [0.0] * len(self.state.pos))
 
     def startup(self, units: bool = True) -> None:
         """The canonical calls of interpreter initialisation (rs274 prints them first)."""
