@@ -18,6 +18,7 @@ from .canon.text import TextSink
 from .config.ini import Ini, Rs274ngcSettings
 from .config.varfile import read_var_file, write_var_file
 from .errors import NgcConfigError, NgcError, NgcOpenError
+from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
 
 USAGE = (
@@ -39,12 +40,13 @@ class Rs274Options:
     block_delete: bool = False  # -b toggles
     print_stack: bool = False  # -s toggles
     batch: bool = False  # -g toggles
+    max_iterations: int = DEFAULT_MAX_ITERATIONS  # --max-iterations (ngc only)
 
 
 def parse_args(argv: list[str]) -> Rs274Options:
     """Parse rs274's options; raises ``ValueError`` with the usage text on a bad command line."""
     try:
-        pairs, rest = getopt.gnu_getopt(argv, "p:t:v:i:n:bsg")
+        pairs, rest = getopt.gnu_getopt(argv, "p:t:v:i:n:bsg", ["max-iterations="])
     except getopt.GetoptError as err:
         raise ValueError(f"rs274: {err.msg}\n{USAGE}") from None
     o = Rs274Options()
@@ -65,6 +67,10 @@ def parse_args(argv: list[str]) -> Rs274Options:
             o.print_stack = not o.print_stack
         elif flag == "-g":
             o.batch = not o.batch
+        elif flag == "--max-iterations":
+            if not value.isdigit() or int(value) < 1:
+                raise ValueError(f"ngc rs274: --max-iterations needs a positive number\n{USAGE}")
+            o.max_iterations = int(value)
         elif flag == "-p":
             raise ValueError("rs274: -p (pluggable interpreters) is not supported\n")
     if len(rest) > 2:
@@ -140,7 +146,7 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
 def _interpret(o: Rs274Options, handle: TextIO, settings: Rs274ngcSettings, ini: Ini | None,
                out: TextIO, prints: TextIO | None, err: TextIO) -> int:
     sink = TextSink(out, prints)
-    interp = Interpreter(sink, block_delete=o.block_delete)
+    interp = Interpreter(sink, block_delete=o.block_delete, max_iterations=o.max_iterations)
     interp.configure(settings, ini)
     interp.emit(ops.UseLengthUnits("CANON_UNITS_MM"))
     if o.var_file is not None:

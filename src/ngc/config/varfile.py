@@ -28,7 +28,9 @@ file could not be opened).  Each save writes ``<path>.new``, replaces ``<path>.b
 to the old file and renames the new file over ``<path>``; a failing link or rename is reported
 (``link (updating variable file): <reason>``) and the run goes on, a ``.new`` file that cannot be
 created makes the save do nothing, silently.  The old file is read again at each save to know which
-numbers it lists, this time with a 4096-byte buffer.
+numbers it lists, this time with a 4096-byte buffer.  :func:`write_var_file` does the same, except
+that its temporary file has a name of its own (``<path>.<random>.new``) and is fsync'ed, and that
+it never leaves a temporary file behind when the save fails.
 """
 
 from __future__ import annotations
@@ -279,7 +281,7 @@ def _backup(path: str) -> list[str]:
     backup = path + ".bak"
     _remove(backup)
     try:
-        os.link(path, backup)
+        os.link(path, backup, follow_symlinks=False)
     except OSError as exc:
         return [f"link (updating variable file): {_reason(exc)}"]
     return []

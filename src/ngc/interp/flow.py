@@ -48,8 +48,9 @@ Plain = tuple[dict[str, float], "int | None", str, str]
 Entry = str | Block | Plain
 # Call levels rs274 allows below the main program.
 MAX_CALL_DEPTH = 9
-# Safety bound on the o-word lines a program may run: an endless ``o100 while [1]`` ends.
-DEFAULT_MAX_OWORDS = 10_000_000
+# Safety bound on the loop iterations of one run (endwhile, endrepeat, do-while, continue and
+# M98 L repeats): an endless ``o100 while [1]`` ends with an error instead of running forever.
+DEFAULT_MAX_ITERATIONS = 10_000_000
 ARGUMENT_PARAMETERS = 30
 _LOOPS = ("while", "do")
 
@@ -190,8 +191,9 @@ class Flow:
         self.tape: Tape | None = None
         self.subroutine_path: list[str] = []
         self.fanuc_enabled = True
-        self.max_owords = DEFAULT_MAX_OWORDS
-        self.owords_run = 0
+        self.max_iterations = DEFAULT_MAX_ITERATIONS
+        self.max_call_depth = MAX_CALL_DEPTH
+        self.iterations = 0
         self.handlers: dict[str, Callable[[Frame, Block, OWord], None]] = {
             keyword: getattr(self, "_" + (keyword or "program"))
             for keyword in (*KEYWORDS, PROGRAM, NOTHING)
@@ -270,14 +272,17 @@ class Flow:
         ow = block.oword
         assert ow is not None
         try:
-            self.owords_run += 1
-            if self.owords_run > self.max_owords:
-                raise NgcRuntimeError(
-                    f"More than {self.max_owords} o-word lines run: stopped as a runaway "
-                    "(raise the bound with --max-owords if the program is meant to run longer)")
             self.handlers[ow.keyword](f, block, ow)
         except NgcError as err:
             raise err.locate(file=f.body.file, line=block.line, source=block.source) from None
+
+    def again(self) -> None:
+        """One more loop iteration; past the bound the program is stopped as a runaway."""
+        self.iterations += 1
+        if self.iterations > self.max_iterations:
+            raise NgcRuntimeError(
+                f"Loop iteration limit ({self.max_iterations}) reached: the program looks like "
+                "it runs forever (raise the limit with --max-iterations)")
 
     def label(self, ow: OWord) -> str:
         return ow.label_of(self.interp.params)
@@ -437,6 +442,7 @@ class Flow:
         if bound is not None and bound[0] == "do" and bound[1] != block.line:
             # The end of a do-while loop.
             if self.condition(ow):
+                self.again()
                 f.pc = bound[1] + 1
             return
         if bound is None or bound[1] != block.line:
@@ -449,6 +455,7 @@ class Flow:
         bound = f.labels.get(label)
         if bound is None or bound[0] != "while":
             bound = self.lookup(f, block, label, ("while",))
+        self.again()
         f.pc = bound[1]
 
     def _do(self, f: Frame, block: Block, ow: OWord) -> None:
@@ -467,7 +474,9 @@ class Flow:
             f.pc = self.jump(f, block, ow, label, ("endrepeat",)).line + 1
 
     def _endrepeat(self, f: Frame, block: Block, ow: OWord) -> None:
-        f.pc = self.lookup(f, block, self.label(ow), ("repeat",))[1]
+        line = self.lookup(f, block, self.label(ow), ("repeat",))[1]
+        self.again()
+        f.pc = line
 
     def _break(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
@@ -479,6 +488,7 @@ class Flow:
         label = self.label(ow)
         keyword, line = self.lookup(f, block, label, _LOOPS, "while/do label")
         if keyword == "while":
+            self.again()
             f.pc = line
         else:
             # rs274 goes to the do's ``while`` and runs it as the start of a new loop: a true
@@ -523,7 +533,7 @@ class Flow:
         params.locals.append({})
 
     def push(self, frame: Frame) -> None:
-        if len(self.frames) > MAX_CALL_DEPTH:
+        if len(self.frames) > self.max_call_depth:
             raise NgcRuntimeError("Too many subroutine levels")
         self.frames.append(frame)
         self.interp.state.call_level = len(self.frames) - 1
@@ -627,6 +637,7 @@ class Flow:
             raise NgcSemanticError(
                 "'O.... endsub' or 'O.... return' must follow 'O.... sub' subroutine definition")
         if f.repeats > 0:
+            self.again()
             f.repeats -= 1
             f.pc = sub.start + 1
         else:

@@ -18,7 +18,7 @@ from ..language.parser import Block, n_label, parse_line, split_plain, words_of
 from ..language.words import FREE_LETTERS, G_BY_VALUE, Words
 from .check import check
 from .compiled import specialise
-from .flow import Flow
+from .flow import DEFAULT_MAX_ITERATIONS, MAX_CALL_DEPTH, Flow
 from .handlers import coordinates, modes, motion, program
 from .parameters import COORD_SYSTEM, G92_APPLIED, Parameters
 from .resolve import Resolved, resolve
@@ -50,7 +50,16 @@ _MOTION_BY_VALUE = {v: code for v, (group, code) in G_BY_VALUE.items() if group 
 class Interpreter:
     """One RS274/NGC interpreter: state, parameters and a sink for its canonical operations."""
 
-    def __init__(self, sink: Sink, *, block_delete: bool = False) -> None:
+    def __init__(
+        self,
+        sink: Sink,
+        *,
+        block_delete: bool = False,
+        max_iterations: int = DEFAULT_MAX_ITERATIONS,
+        max_call_depth: int = MAX_CALL_DEPTH,
+    ) -> None:
+        """``max_iterations`` bounds the loop iterations of a run (a runaway loop is an error);
+        ``max_call_depth`` the subroutine levels below the main program (rs274: 9)."""
         self.sink = sink
         self.state = State()
         self.state.blocks_deleted = block_delete
@@ -71,6 +80,8 @@ class Interpreter:
         # The last line control flow read ahead of the streaming loop: (number, text).
         self.last_read = (0, "")
         self.flow = Flow(self)
+        self.flow.max_iterations = max_iterations
+        self.flow.max_call_depth = max_call_depth
         self.numbered: Iterator[tuple[int, str]] = iter(())
 
     def close(self) -> None:

@@ -1,0 +1,105 @@
+"""Control-flow safety: runaway loops, call depth, deep nesting, parse-once re-execution."""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+
+import pytest
+
+from ngc import rs274
+from ngc.canon.jsonl import ListSink
+from ngc.errors import NgcRuntimeError
+from ngc.interp.interpreter import Interpreter
+
+
+def run(text: str, **options: int) -> Interpreter:
+    interp = Interpreter(ListSink(), **options)
+    interp.startup()
+    interp.run(io.StringIO(text), file="t.ngc")
+    return interp
+
+
+def test_runaway_while_ends_with_an_error_at_its_line() -> None:
+    with pytest.raises(NgcRuntimeError) as caught:
+        run("G0 X1\no100 while [1]\n  G0 X2\no100 endwhile\nM2\n", max_iterations=500)
+    err = caught.value
+    assert "Loop iteration limit (500) reached" in err.message
+    assert (err.file, err.line, err.source) == ("t.ngc", 4, "o100 endwhile")
+
+
+@pytest.mark.parametrize(
+    "program",
+    [
+        "o1 do\no1 while [1]\nM2\n",
+        "o1 repeat [1e9]\no1 endrepeat\nM2\n".replace("1e9", "1000000000"),
+        "o1 while [1]\no1 continue\no1 endwhile\nM2\n",
+        "M98 P1 L1000000000\nM30\no1\nM99\n",
+    ],
+)
+def test_every_kind_of_loop_is_bounded(program: str) -> None:
+    with pytest.raises(NgcRuntimeError, match="Loop iteration limit"):
+        run(program, max_iterations=100)
+
+
+def test_a_loop_within_the_bound_runs_to_the_end() -> None:
+    interp = run("#1=0\no1 while [#1 LT 100]\n#1=[#1+1]\no1 endwhile\nM2\n", max_iterations=100)
+    assert interp.ended and interp.params.numbered[1] == 100.0
+
+
+def test_rs274_command_line_bound(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "r.ngc").write_text("o100 while [1]\no100 endwhile\nM2\n")
+    out, err = io.StringIO(), io.StringIO()
+    rc = rs274.run(["-g", "--max-iterations", "50", "r.ngc"], stdout=out, stderr=err)
+    assert rc == 1
+    assert err.getvalue().splitlines()[1:] == [
+        "Loop iteration limit (50) reached: the program looks like it runs forever "
+        "(raise the limit with --max-iterations)",
+        "o100 endwhile",
+    ]
+
+
+def test_bad_bound_on_the_command_line() -> None:
+    out, err = io.StringIO(), io.StringIO()
+    assert rs274.run(["--max-iterations", "0", "x.ngc"], stdout=out, stderr=err) == 1
+    assert "--max-iterations needs a positive number" in err.getvalue()
+
+
+def test_endless_recursion_stops_at_the_call_depth() -> None:
+    with pytest.raises(NgcRuntimeError, match="Too many subroutine levels"):
+        run("o1 sub\no1 call\no1 endsub\no1 call\nM2\n")
+
+
+def test_call_depth_is_configurable() -> None:
+    program = "o1 sub\n#<_d>=[#<_d>+1]\no2 if [#<_d> LT 5]\no1 call\no2 endif\no1 endsub\n" \
+        "#<_d>=0\no1 call\nM2\n"
+    assert run(program).ended
+    with pytest.raises(NgcRuntimeError, match="Too many subroutine levels"):
+        run(program, max_call_depth=3)
+
+
+@pytest.mark.parametrize(
+    "expression",
+    ["[" * 120 + "1" + "]" * 120, "-" * 240 + "1", "[1+" * 60 + "1" + "]" * 60],
+)
+def test_deep_nesting_in_a_line_is_not_a_crash(expression: str) -> None:
+    # The longest line rs274 reads (252 characters) bounds nesting; no Python recursion limit is
+    # reachable from program text.
+    interp = run(f"#1={expression}\nM2\n")
+    assert interp.params.numbered[1] == (1.0 if "+" not in expression else 61.0)
+
+
+def test_loop_body_is_parsed_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    from ngc.interp import interpreter
+
+    calls = []
+    real = interpreter.parse_line
+
+    def counting(raw: str, number: int = 0):  # type: ignore[no-untyped-def]
+        calls.append(number)
+        return real(raw, number)
+
+    monkeypatch.setattr(interpreter, "parse_line", counting)
+    run("#1=0\no1 while [#1 LT 50]\nG1 X[#1] F100\n#1=[#1+1]\no1 endwhile\nM2\n")
+    assert len(calls) == len(set(calls))  # every line parsed at most once
