@@ -20,7 +20,7 @@ from .check import check
 from .compiled import specialise
 from .flow import DEFAULT_MAX_ITERATIONS, MAX_CALL_DEPTH, Flow
 from .handlers import coordinates, modes, motion, program
-from .parameters import COORD_SYSTEM, G92_APPLIED, Parameters
+from .parameters import COORD_SYSTEM, DEBUG_ENABLE, G92_APPLIED, Parameters
 from .resolve import Resolved, resolve
 from .state import State
 
@@ -106,10 +106,12 @@ class Interpreter:
         numbered = self.params.numbered
         for number, value in values.items():
             numbered[number] = value
+        numbered[DEBUG_ENABLE] = 1.0
         if disable_g92:
             numbered[G92_APPLIED : G92_APPLIED + 10] = [0.0] * 10
-        index = int(numbered[COORD_SYSTEM])
-        coordinates.load_system(self, index if 1 <= index <= 9 else 1)
+        if not 1.0 <= numbered[COORD_SYSTEM] < 10.0:
+            numbered[COORD_SYSTEM] = 1.0
+        coordinates.load_system(self, int(numbered[COORD_SYSTEM]))
         coordinates.load_g92(self)
         self.state.pos = coordinates.to_program(self.state, [0.0] * len(self.state.pos))
 

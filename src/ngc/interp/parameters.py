@@ -158,7 +158,12 @@ class Parameters:
 
     # -- writing ------------------------------------------------------------------------------
     def declare(self, name: str) -> None:
-        """A named parameter exists (reading 0) from the moment its setting is read (rs274)."""
+        """A named parameter exists (reading 0) from the moment its setting is read (rs274).
+
+        An INI value (``#<_ini[section]name>`` that the INI file defines) is read-only.
+        """
+        if name.startswith(INI_PREFIX) and ini_parameter(self.ini, name) is not None:
+            raise NgcRuntimeError(f"Cannot assign to read-only parameter #<{name}>")
         scope = self.globals if name.startswith("_") else self.locals[-1]
         scope.setdefault(name, 0.0)
 
@@ -181,6 +186,6 @@ def check_number_writable(index: int) -> None:
 
 
 def check_writable(name: str) -> None:
-    """Predefined named parameters and INI values are read-only."""
-    if name in PREDEFINED or name.startswith(INI_PREFIX):
+    """Predefined named parameters are read-only."""
+    if name in PREDEFINED:
         raise NgcRuntimeError(f"Cannot assign to read-only parameter #<{name}>")
