@@ -435,7 +435,7 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     )
     ap.add_argument(
         "--kinds",
-        default="surface,contour",
+        default="surface,contour,macro",
         help=f"comma-separated program kinds of {','.join(KINDS)} (default: %(default)s)",
     )
     ap.add_argument(
