@@ -432,10 +432,12 @@ class Interpreter:
             return
         rest = copy.copy(r)
         rest.m = {group: value for group, value in r.m.items() if group != codes.M_USER}
-        self.convert(rest)
         in_sub = self.flow.tape is not None and len(self.flow.frames) > 1
         if in_sub and (rest.g or rest.w or rest.m):
+            self.convert(rest)
             raise NgcSemanticError("Bug:  Reached convert_stop() from M99 as subprogram return")
+        if not in_sub:
+            self.convert(rest)  # in a subprogram the return comes first; its comment is not run
         if not self.flow.fanuc(block, 99, None, None):
             program.program_end(self, 2)
 
