@@ -136,8 +136,9 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
             handle.close()
             return 1
     try:
-        return _interpret(o, handle, settings, ini, out if transcript is None else transcript,
-                          None if transcript is None else out, err)
+        with handle:
+            return _interpret(o, handle, settings, ini, out if transcript is None else transcript,
+                              None if transcript is None else out, err)
     finally:
         if transcript is not None:
             transcript.close()
@@ -154,24 +155,23 @@ def _interpret(o: Rs274Options, handle: TextIO, settings: Rs274ngcSettings, ini:
             values = read_var_file(o.var_file)
         except NgcConfigError as exc:
             sink.flush()
-            err.write(f"{exc.message}\n\n")
+            report(err, exc)  # rs274: the message, then an empty line
             return 1
         interp.load_parameters(values, settings.disable_g92_persistence)
         _save(o.var_file, interp, err)
     interp.startup(units=False)
     failed = False
-    with handle:
-        try:
-            interp.run(handle, file=o.program, on_open=lambda: interp.emit(ops.OnReset()))
-        except NgcOpenError as exc:
-            # rs274 could not open the program: it reports and exits without resetting.
-            sink.flush()
-            report(err, exc)
-            return 1
-        except NgcError as exc:
-            failed = True
-            sink.flush()
-            report(err, exc)
+    try:
+        interp.run(handle, file=o.program, on_open=lambda: interp.emit(ops.OnReset()))
+    except NgcOpenError as exc:
+        # rs274 could not open the program: it reports and exits without resetting.
+        sink.flush()
+        report(err, exc)
+        return 1
+    except NgcError as exc:
+        failed = True
+        sink.flush()
+        report(err, exc)
     interp.label = "N..... "
     if ini is None:
         interp.emit(ops.OnReset())
@@ -188,8 +188,8 @@ def _settings(o: Rs274Options, err: TextIO) -> tuple[Rs274ngcSettings, Ini | Non
         return Rs274ngcSettings(), None
     try:
         ini = Ini.read(o.ini_file)
-    except (OSError, NgcConfigError):
-        err.write(f"Unable to open inifile:{o.ini_file}:\n")
+    except NgcConfigError as exc:
+        err.write(f"{exc.message}\n")
         return Rs274ngcSettings(), None
     settings = Rs274ngcSettings.from_ini(ini, os.getcwd())
     for message in settings.messages:

@@ -120,19 +120,16 @@ class Tape(Body):
             if item is None:
                 return None
             read, raw = item
-            raw = self.interp.checked_line(raw, read)
-            lines.append(raw)
-            self.interp.last_read = (read, raw)
+            lines.append(self.interp.checked_line(raw, read))
         return lines[i] if i >= 0 else None
 
 
 class Sub:
     """A defined subroutine: the body holding it and the line of its ``sub`` (or ``o100``)."""
 
-    __slots__ = ("body", "fanuc", "label", "start")
+    __slots__ = ("body", "fanuc", "start")
 
-    def __init__(self, label: str, body: Body, start: int, fanuc: bool = False) -> None:
-        self.label = label
+    def __init__(self, body: Body, start: int, fanuc: bool = False) -> None:
         self.body = body
         self.start = start
         self.fanuc = fanuc
@@ -332,7 +329,7 @@ class Flow:
                         seeking.line, seeking.source)
                     raise NgcProgramError(
                         f"EOF in file:{body.file} seeking o-word: o<{label}> "
-                        f"from line: {seeking.line if body is f.body and start else 0}",
+                        f"from line: {seeking.line if start else 0}",
                         file=body.file, line=line, source=source)
                 self.end_of_file(Frame(body, number, None))
             if isinstance(entry, tuple):
@@ -376,16 +373,17 @@ class Flow:
             except NgcError as err:
                 raise err.locate(file=body.file, line=number, source=source) from None
 
-    def jump(self, f: Frame, block: Block, ow: OWord, label: str, kinds: tuple[str, ...]) -> Mark:
-        """``skip`` (BRANCH) from ``block``, remembered on the o-word when its label is constant."""
+    def jump(self, f: Frame, start: int, ow: OWord, label: str, kinds: tuple[str, ...]) -> Mark:
+        """``skip`` (BRANCH) from line ``start`` (``ow``'s line), remembered on the o-word when
+        its label is constant."""
         key = kinds[0]
         if ow.label is not None:
             known = ow.jumps.get(key)
             if isinstance(known, Mark):
                 return known
-        found = self.skip(f, block.line, label, kinds, BRANCH)
+        found = self.skip(f, start, label, kinds, BRANCH)
         if ow.label is not None:
-            ow.jumps[key] = found  # type: ignore[assignment]
+            ow.jumps[key] = found
         return found
 
     # -- conditionals -------------------------------------------------------------------------
@@ -393,12 +391,12 @@ class Flow:
         label = self.label(ow)
         self.bind(f, block, label, "if")
         if not self.condition(ow):
-            self.next_branch(f, block, ow, label)
+            self.next_branch(f, block.line, ow, label)
 
-    def next_branch(self, f: Frame, block: Block, ow: OWord, label: str) -> None:
+    def next_branch(self, f: Frame, start: int, ow: OWord, label: str) -> None:
         """A false condition: on to the next ``elseif`` that holds, the ``else``, or the ``endif``."""
         while True:
-            found = self.jump(f, block, ow, label, ("elseif", "else", "endif"))
+            found = self.jump(f, start, ow, label, ("elseif", "else", "endif"))
             f.pc = found.line + 1
             other = found.oword
             if other.keyword != "elseif":
@@ -410,20 +408,19 @@ class Flow:
                     return
             except NgcError as err:
                 raise err.locate(file=f.body.file, line=found.line, source=found.source) from None
-            block = Block(found.line, found.source)
-            ow = other
+            start, ow = found.line, other
 
     def _elseif(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
         self.lookup(f, block, label, ("if",), "'if' label")
         if ow.args:
             self.condition(ow)  # rs274 evaluates it even though the branch is over
-        f.pc = self.jump(f, block, ow, label, ("endif",)).line + 1
+        f.pc = self.jump(f, block.line, ow, label, ("endif",)).line + 1
 
     def _else(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
         self.lookup(f, block, label, ("if",), "'if' label")
-        f.pc = self.jump(f, block, ow, label, ("endif",)).line + 1
+        f.pc = self.jump(f, block.line, ow, label, ("endif",)).line + 1
 
     def _endif(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
@@ -448,7 +445,7 @@ class Flow:
         if bound is None or bound[1] != block.line:
             self.bind(f, block, label, "while")
         if not self.condition(ow):
-            f.pc = self.jump(f, block, ow, label, ("endwhile",)).line + 1
+            f.pc = self.jump(f, block.line, ow, label, ("endwhile",)).line + 1
 
     def _endwhile(self, f: Frame, block: Block, ow: OWord) -> None:
         label = ow.label if ow.label is not None else self.label(ow)
@@ -471,7 +468,7 @@ class Flow:
             f.active[label] = left - 1
         else:
             f.active.pop(label, None)
-            f.pc = self.jump(f, block, ow, label, ("endrepeat",)).line + 1
+            f.pc = self.jump(f, block.line, ow, label, ("endrepeat",)).line + 1
 
     def _endrepeat(self, f: Frame, block: Block, ow: OWord) -> None:
         line = self.lookup(f, block, self.label(ow), ("repeat",))[1]
@@ -482,7 +479,7 @@ class Flow:
         label = self.label(ow)
         keyword, _ = self.lookup(f, block, label, _LOOPS, "while/do label")
         end = ("endwhile",) if keyword == "while" else ("while",)
-        f.pc = self.jump(f, block, ow, label, end).line + 1
+        f.pc = self.jump(f, block.line, ow, label, end).line + 1
 
     def _continue(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
@@ -493,7 +490,7 @@ class Flow:
         else:
             # rs274 goes to the do's ``while`` and runs it as the start of a new loop: a true
             # condition carries on after it, out of the do loop.
-            f.pc = self.jump(f, block, ow, label, ("while",)).line + 1
+            f.pc = self.jump(f, block.line, ow, label, ("while",)).line + 1
 
     # -- subroutines ---------------------------------------------------------------------------
     def _sub(self, f: Frame, block: Block, ow: OWord) -> None:
@@ -511,7 +508,7 @@ class Flow:
                 f"File:{file} line:{block.line} redefining sub: o|{label}| already defined in "
                 f"file:{known.body.file}")
         end = self.skip(f, block.line, label, ("endsub",), DEFINE)
-        self.subs[label] = Sub(label, f.body, block.line)
+        self.subs[label] = Sub(f.body, block.line)
         f.pc = end.line + 1
 
     def _call(self, f: Frame, block: Block, ow: OWord) -> None:
@@ -551,7 +548,7 @@ class Flow:
         else:
             body = f.body
             found = self.skip(f, block.line, label, ("sub", PROGRAM), SEEK, block)
-        sub = Sub(label, body, found.line, fanuc=found.oword.keyword == PROGRAM)
+        sub = Sub(body, found.line, fanuc=found.oword.keyword == PROGRAM)
         self.subs[label] = sub
         return sub
 

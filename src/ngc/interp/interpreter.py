@@ -47,6 +47,20 @@ _ARCS = (20, 30)
 _MOTION_BY_VALUE = {v: code for v, (group, code) in G_BY_VALUE.items() if group == codes.G_MOTION}
 
 
+def _plain_entry(
+    found: tuple[dict[str, float], float | None, str | None],
+) -> tuple[dict[str, float], int | None, str] | None:
+    """What :func:`split_plain` read, as (words, motion code, N column) when the line can take
+    :meth:`Interpreter.convert_plain`: a motion code (or none) and only its plain letters."""
+    w, g, digits = found
+    code = None if g is None else _MOTION_BY_VALUE.get(g)
+    if (g is None or code is not None) and (
+        _PLAIN_LETTERS.issuperset(w) or (code in _ARCS and _ARC_LETTERS.issuperset(w))
+    ):
+        return w, code, "N..... " if digits is None else n_label(digits)
+    return None
+
+
 class Interpreter:
     """One RS274/NGC interpreter: state, parameters and a sink for its canonical operations."""
 
@@ -64,7 +78,7 @@ class Interpreter:
         self.state = State()
         self.state.blocks_deleted = block_delete
         self.params = Parameters(self.state)
-        self.params.numbered[5220] = 1.0
+        self.params.numbered[COORD_SYSTEM] = 1.0
         self.label = "N..... "
         self.line = 0
         self.ended = False
@@ -77,8 +91,6 @@ class Interpreter:
         self.probe_log: TextIO | None = None
         self.percent = False
         self.finished = False  # the closing % was read
-        # The last line control flow read ahead of the streaming loop: (number, text).
-        self.last_read = (0, "")
         self.flow = Flow(self)
         self.flow.max_iterations = max_iterations
         self.flow.max_call_depth = max_call_depth
@@ -135,9 +147,9 @@ class Interpreter:
 
         The program is "open" once its first non-blank line is read (``on_open`` is called then);
         an empty program raises :class:`NgcOpenError`.  Raises :class:`NgcError` (with file and
-        line) on the first error.  Plain lines stream; from an o-word line on, :mod:`.flow` runs
-        the program until no loop can return to lines already read.  Files the program opened
-        (logs) are closed at the end, whatever the outcome.
+        line) on the first error.  Plain lines stream; from the first o-word line (or M98/M99)
+        on, :mod:`.flow` runs the rest of the program.  Files the program opened (logs) are
+        closed at the end, whatever the outcome.
         """
         try:
             self._run(lines, file, on_open)
@@ -154,7 +166,6 @@ class Interpreter:
         self.ended = self.finished = False
         numbered = enumerate(lines, 1)
         self.numbered = numbered
-        self.last_read = (0, "")
         number, raw = 0, ""
         for number, raw in numbered:
             raw = self._checked(raw, number, opening=True)
@@ -169,13 +180,9 @@ class Interpreter:
         flow = self.flow
         if not percent:
             self._execute_raw(raw, number)
-            if flow.tape is not None and not self.ended:
-                flow.run()
-                self._after_end()
+            if self.ended or flow.tape is not None:
+                self._finish_run()
                 return
-        if self.ended:
-            self._after_end()
-            return
         plain = self.execute_plain
         for number, raw in numbered:
             raw = raw.rstrip("\n")
@@ -186,19 +193,19 @@ class Interpreter:
                 return
             if not plain(raw, number):
                 self.execute_line(raw, number)
-                if flow.tape is not None and not self.ended:
-                    flow.run()
-                    self._after_end()
-                    return
-            if self.ended:
-                self._after_end()
+            if self.ended or flow.tape is not None:
+                self._finish_run()
                 return
         message = "File ended with no percent sign" if percent else (
             "File ended with no percent sign or program end"
         )
-        if self.last_read[0] > number:
-            number, raw = self.last_read
         raise NgcProgramError(message, file=file, line=number, source=raw.rstrip())
+
+    def _finish_run(self) -> None:
+        """The program ended, or control flow took it over: it runs the rest, to the end."""
+        if not self.ended:
+            self.flow.run()
+        self._after_end()
 
     def _after_end(self) -> None:
         """After M2/M30 in a ``%`` program rs274 looks for the closing ``%`` in the lines left."""
@@ -257,17 +264,14 @@ class Interpreter:
             found = split_plain(raw.replace(" ", "").lower())
             if found is None:
                 return self.execute_comment_line(raw, number)
-            w, g, digits = found
-            code = None if g is None else _MOTION_BY_VALUE.get(g)
-            if (g is None or code is not None) and (
-                _PLAIN_LETTERS.issuperset(w)
-                or (code in _ARCS and _ARC_LETTERS.issuperset(w))
-            ):
-                self.label = label = "N..... " if digits is None else n_label(digits)
+            hit = _plain_entry(found)
+            if hit is not None:
+                w, code, self.label = hit
                 self.line = self.state.line = number
                 self.convert_plain(w, code)
-                self._remember_plain(raw, (w, code, label))
+                self._remember_plain(raw, hit)
                 return True
+            w, g, digits = found
             block = Block(number, raw.rstrip())
             block.resolved = words_of(w, g)
             if digits is not None:
@@ -281,15 +285,9 @@ class Interpreter:
     def compile_line(self, raw: str, number: int) -> tuple[dict[str, float], int | None, str, str] | Block:
         """A line read once for running many times: a plain-words tuple or a parsed block."""
         found = split_plain(raw.replace(" ", "").lower())
-        if found is not None:
-            w, g, digits = found
-            code = None if g is None else _MOTION_BY_VALUE.get(g)
-            if (g is None or code is not None) and (
-                _PLAIN_LETTERS.issuperset(w)
-                or (code in _ARCS and _ARC_LETTERS.issuperset(w))
-            ):
-                label = "N..... " if digits is None else n_label(digits)
-                return (w, code, label, raw.rstrip())
+        hit = None if found is None else _plain_entry(found)
+        if hit is not None:
+            return (*hit, raw.rstrip())
         block = parse_line(raw, number)
         block.fast = specialise(self, block)
         return block

@@ -51,8 +51,8 @@ class OWord:
         self.label = label
         self.label_expr = label_expr
         self.args: list[ex.Value] = []
-        # Where a skip from this line ends, once found (constant labels only).
-        self.jumps: dict[str, int] = {}
+        # Where a skip from this line ends, once found (constant labels only; set by the flow).
+        self.jumps: dict[str, object] = {}
 
     def label_of(self, params: ex.ParamContext) -> str:
         """The label: constant, or computed from the current parameters (``o[#1+2]``)."""
