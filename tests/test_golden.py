@@ -7,29 +7,14 @@ compares: stdout without the counter column, stderr lines other than ``executing
 from __future__ import annotations
 
 import io
-import re
 from pathlib import Path
 
 import pytest
 
 from ngc import rs274
+from transcript import messages, normalize
 
 CASES = Path(__file__).parent / "golden" / "cases"
-COUNTER = re.compile(r"^ *[0-9]+ ")
-
-
-def normalize(text: str) -> str:
-    lines = text.split("\n")
-    if lines and lines[-1] == "":
-        lines.pop()
-    return "".join(COUNTER.sub("", line, count=1) + "\n" for line in lines)
-
-
-def messages(text: str) -> list[str]:
-    lines = text.split("\n")
-    if lines and lines[-1] == "":
-        lines.pop()
-    return [line for line in lines if line != "executing"]
 
 
 # Known differences, each with its reason; strict, so a case that starts passing is noticed.

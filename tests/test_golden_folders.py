@@ -16,32 +16,17 @@ from __future__ import annotations
 
 import io
 import json
-import re
 import shutil
 from pathlib import Path
 
 import pytest
 
 from ngc import rs274
+from transcript import messages, normalize
 
 FOLDERS = Path(__file__).parent / "golden" / "folders"
-COUNTER = re.compile(r"^ *[0-9]+ ")
 FILES_DIR = "expected.files"
 NGC_FILES_DIR = "ngc.files"
-
-
-def normalize(text: str) -> str:
-    lines = text.split("\n")
-    if lines and lines[-1] == "":
-        lines.pop()
-    return "".join(COUNTER.sub("", line, count=1) + "\n" for line in lines)
-
-
-def messages(text: str) -> list[str]:
-    lines = text.split("\n")
-    if lines and lines[-1] == "":
-        lines.pop()
-    return [line for line in lines if line != "executing"]
 
 
 def is_input(rel: Path) -> bool:

@@ -32,8 +32,8 @@ comma-separated.  ``--check`` writes nothing: it reports every case whose
 recorded files differ from a fresh run and exits 1 if any do.
 Exit status 2: usage error (no case matched, rs274 cannot be started).
 
-Standard library only (Python >= 3.11); does not depend on anything outside
-this folder.
+Standard library only (Python >= 3.11); shares regen.py's normalization and
+child environment and does not depend on anything outside this folder.
 """
 
 from __future__ import annotations
@@ -44,7 +44,6 @@ import difflib
 import fnmatch
 import json
 import os
-import re
 import shlex
 import shutil
 import subprocess
@@ -53,38 +52,13 @@ import tempfile
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+# The transcript normalization and the child's environment are regen.py's (this folder).
+from regen import DEFAULT_TIMEOUT_S, child_env, normalize_stdout  # noqa: E402
+
 FOLDERS_DIR = HERE / "folders"
-DEFAULT_TIMEOUT_S = 20.0
 EXPECTED = ("expected.out", "expected.err", "expected.rc")
 FILES_DIR = "expected.files"
-
-# Same rule as regen.py / the conformance runner: strip "^ *[0-9]+ " once.
-COUNTER_RE = re.compile(rb"^ *[0-9]+ ")
-
-
-def split_lines(data: bytes) -> list[bytes]:
-    """Split on b'\\n'; a missing final newline is treated as present."""
-    if not data:
-        return []
-    lines = data.split(b"\n")
-    if lines[-1] == b"":
-        lines.pop()
-    return lines
-
-
-def normalize_stdout(data: bytes) -> bytes:
-    """Strip the counter column from each line; every line ends in b'\\n'."""
-    return b"".join(COUNTER_RE.sub(b"", line, count=1) + b"\n" for line in split_lines(data))
-
-
-def child_env(home: Path) -> dict[str, str]:
-    env = dict(os.environ)
-    env["HOME"] = str(home)
-    env["LC_ALL"] = "C"
-    env.pop("LANGUAGE", None)
-    env.pop("INI_FILE_NAME", None)
-    return env
-
 
 def is_input(rel: Path) -> bool:
     """True for the case's input files (not case.json, the expected.* results or ngc.files)."""
