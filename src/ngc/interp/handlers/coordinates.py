@@ -99,13 +99,18 @@ def load_system(it: Interpreter, index: int) -> None:
     st.rotation = numbered[base + 9]
 
 
+def _stored_g92(it: Interpreter) -> Vec:
+    """The G92 offsets #5211-#5216 hold, in program units."""
+    st = it.state
+    return [_from_user(st, i, it.params.numbered[G92_OFFSET + i]) for i in range(AXES)]
+
+
 def load_g92(it: Interpreter) -> None:
     """The G92 offsets from their parameters when #5210 says they apply (a parameter file)."""
     st = it.state
-    numbered = it.params.numbered
-    st.g92_applied = numbered[G92_APPLIED] != 0.0
+    st.g92_applied = it.params.numbered[G92_APPLIED] != 0.0
     if st.g92_applied:
-        st.g92 = [_from_user(st, i, numbered[G92_OFFSET + i]) for i in range(AXES)]
+        st.g92 = _stored_g92(it)
 
 
 def select_system(it: Interpreter, code: int) -> None:
@@ -243,7 +248,7 @@ def g92_reset(it: Interpreter, code: int) -> None:
     st = it.state
     numbered = it.params.numbered
     if code == 923:
-        new = [_from_user(st, i, numbered[G92_OFFSET + i]) for i in range(AXES)]
+        new = _stored_g92(it)
         _applied(it, True)
     else:
         new = [0.0] * AXES
