@@ -96,9 +96,9 @@ def test_loop_body_is_parsed_once(monkeypatch: pytest.MonkeyPatch) -> None:
     calls = []
     real = interpreter.parse_line
 
-    def counting(raw: str, number: int = 0):  # type: ignore[no-untyped-def]
+    def counting(raw: str, number: int = 0, *more):  # type: ignore[no-untyped-def]
         calls.append(number)
-        return real(raw, number)
+        return real(raw, number, *more)
 
     monkeypatch.setattr(interpreter, "parse_line", counting)
     run("#1=0\no1 while [#1 LT 50]\nG1 X[#1] F100\n#1=[#1+1]\no1 endwhile\nM2\n")

@@ -35,11 +35,13 @@ def _cases() -> list[object]:
     ]
 
 
+@pytest.mark.parametrize("fast", [True, False], ids=["fast", "general"])
 @pytest.mark.parametrize("name", _cases())
-def test_golden(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_golden(name: str, fast: bool, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every case, with the fast path on and off (the general path alone must give the same)."""
     monkeypatch.chdir(CASES)
     out, err = io.StringIO(), io.StringIO()
-    rc = rs274.run(["-g", f"{name}.ngc"], stdout=out, stderr=err)
+    rc = rs274.run(["-g", f"{name}.ngc"], stdout=out, stderr=err, fast=fast)
     expected_out = (CASES / f"{name}.out").read_text(encoding="latin-1")
     expected_err = (CASES / f"{name}.err").read_text(encoding="latin-1")
     expected_rc = int((CASES / f"{name}.rc").read_text())

@@ -54,8 +54,10 @@ def _cases() -> list[object]:
     ]
 
 
+@pytest.mark.parametrize("fast", [True, False], ids=["fast", "general"])
 @pytest.mark.parametrize("name", _cases())
-def test_golden_folder(name: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_golden_folder(name: str, fast: bool, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every folder case, with the fast path on and off."""
     case = FOLDERS / name
     args = json.loads((case / "case.json").read_text())["args"]
     work = tmp_path / "work"
@@ -68,7 +70,7 @@ def test_golden_folder(name: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatc
     before = snapshot(work)
     monkeypatch.chdir(work)
     out, err = io.StringIO(), io.StringIO()
-    rc = rs274.run(list(args), stdout=out, stderr=err)
+    rc = rs274.run(list(args), stdout=out, stderr=err, fast=fast)
     after = snapshot(work)
 
     expected_out = (case / "expected.out").read_text(encoding="latin-1")

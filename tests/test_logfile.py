@@ -369,7 +369,7 @@ class FullFile(io.StringIO):
 
 def test_a_failed_write_is_an_error_at_the_line(cwd: Path) -> None:
     interp = Interpreter(ListSink())
-    interp.log = FullFile()
+    interp.machine.log = FullFile()
     with pytest.raises(NgcRuntimeError) as caught:
         interp.run(["G0 X1", "(LOG,x)", "M2"])
     assert caught.value.message == "LOG: cannot write 'full.txt': No space left on device"

@@ -82,24 +82,25 @@ def parse_args(argv: list[str]) -> Rs274Options:
     return o
 
 
-def run(argv: list[str], stdout: TextIO | None = None, stderr: TextIO | None = None) -> int:
+def run(argv: list[str], stdout: TextIO | None = None, stderr: TextIO | None = None, *,
+        fast: bool = True) -> int:
     """Run like ``rs274 argv...``; returns the exit code.
 
     Without streams, writes to the process's stdout and stderr byte for byte (latin-1), as the
-    program text is read.
+    program text is read.  ``fast=False`` runs every line on the interpreter's general path.
     """
     if stdout is None or stderr is None:
         out = stdout or _byte_stream(sys.stdout)
         err = stderr or _byte_stream(sys.stderr)
         try:
-            return _run(argv, out, err)
+            return _run(argv, out, err, fast)
         finally:
             for stream, given in ((out, stdout), (err, stderr)):
                 if given is None:
                     stream.flush()
                     if isinstance(stream, io.TextIOWrapper):
                         stream.detach()
-    return _run(argv, stdout, stderr)
+    return _run(argv, stdout, stderr, fast)
 
 
 def _byte_stream(stream: TextIO) -> TextIO:
@@ -110,7 +111,7 @@ def _byte_stream(stream: TextIO) -> TextIO:
     return io.TextIOWrapper(buffer, encoding="latin-1", newline="\n", line_buffering=False)
 
 
-def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
+def _run(argv: list[str], out: TextIO, err: TextIO, fast: bool = True) -> int:
     try:
         o = parse_args(argv)
     except ValueError as exc:
@@ -138,16 +139,17 @@ def _run(argv: list[str], out: TextIO, err: TextIO) -> int:
     try:
         with handle:
             return _interpret(o, handle, settings, ini, out if transcript is None else transcript,
-                              None if transcript is None else out, err)
+                              None if transcript is None else out, err, fast)
     finally:
         if transcript is not None:
             transcript.close()
 
 
 def _interpret(o: Rs274Options, handle: TextIO, settings: Rs274ngcSettings, ini: Ini | None,
-               out: TextIO, prints: TextIO | None, err: TextIO) -> int:
+               out: TextIO, prints: TextIO | None, err: TextIO, fast: bool) -> int:
     sink = TextSink(out, prints)
-    interp = Interpreter(sink, block_delete=o.block_delete, max_iterations=o.max_iterations)
+    interp = Interpreter(sink, block_delete=o.block_delete, max_iterations=o.max_iterations,
+                         fast=fast)
     interp.configure(settings, ini)
     interp.emit(ops.UseLengthUnits("CANON_UNITS_MM"))
     if o.var_file is not None:

@@ -102,6 +102,18 @@ class SetNaivecamTolerance(NamedTuple):
     tolerance: float
 
 
+class UseToolLengthOffset(NamedTuple):
+    x: float
+    y: float
+    z: float
+    a: float
+    b: float
+    c: float
+    u: float
+    v: float
+    w: float
+
+
 # -- offsets --------------------------------------------------------------------------------------
 class SetG5xOffset(NamedTuple):
     system: int
@@ -262,6 +274,7 @@ TEMPLATES: Mapping[type, str] = MappingProxyType(
         SetMotionControlMode: "SET_MOTION_CONTROL_MODE(%s)",
         SetMotionControlContinuous: "SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, %f)",
         SetNaivecamTolerance: "SET_NAIVECAM_TOLERANCE(%.4f)",
+        UseToolLengthOffset: "USE_TOOL_LENGTH_OFFSET(%.4f %.4f %.4f, %.4f %.4f %.4f, %.4f %.4f %.4f)",
         SetG5xOffset: "SET_G5X_OFFSET(%d, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
         SetG92Offset: "SET_G92_OFFSET(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
         SetXYRotation: "SET_XY_ROTATION(%.4f)",

@@ -1,107 +1,104 @@
 """Check: the rules a resolved block must satisfy before anything in it executes.
 
-These are rs274's checks of G codes, M codes and "other" words (a word must have a code that uses
-it), with its messages.  Nothing here changes state.
+A block that breaks one leaves no trace: nothing emitted, no state changed.  The rules come from
+the code table (codes not supported yet, the words each code uses and requires) and from rs274's
+checks of G53, axis words and G10, with its messages.  Nothing here changes state.
 """
 
 from __future__ import annotations
 
 from ..errors import NgcSemanticError, NgcSyntaxError
 from ..language import codes
-from ..language.words import Words as Resolved
+from ..language.codes import CodeTable
+from ..language.words import Words
 from .state import State
 
-_ARC = (20, 30)
-
-# Words that need a code to use them: letter -> (codes that use it (G*10 or "M<n>"), message).
-_P_MSG = (
-    "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 "
-    "M65 M66 M98 or user M code to use it"
-)
+_G10_L = (0.0, 1.0, 2.0, 10.0, 11.0, 20.0)
 
 
-def check(st: State, r: Resolved) -> None:
+def check(st: State, r: Words, table: CodeTable) -> None:
     """Raise the first rule ``r`` breaks, in rs274's order."""
     g = r.g
+    _check_supported(r, table)
     non_modal = g.get(codes.G_NON_MODAL)
     motion = g.get(codes.G_MOTION)
-    if non_modal == 530:
-        _check_g53(st, motion)
+    if non_modal == codes.G_MACHINE_COORDINATES:
+        _check_g53(st, r, motion)
     if r.has_axes:
-        _check_axis_users(st, motion, non_modal)
+        _check_axis_users(st, motion, non_modal, table)
     if r.others:
-        active = _active_motion(st, r, motion, non_modal)
-        _check_other_words(r, active, non_modal)
+        _check_other_words(st, r, motion, non_modal, table)
+    for code in g.values():
+        row = table.g[code]
+        if row.requires and not any(letter in r.w for letter in row.requires):
+            raise NgcSemanticError(row.missing)
+    if non_modal == 100:
+        _check_g10(r)
 
 
-def _check_g53(st: State, motion: int | None) -> None:
+def _check_supported(r: Words, table: CodeTable) -> None:
+    """A code (or word) ngc does not run yet is refused before anything else is said of it."""
+    for code in r.g.values():
+        if table.g[code].handler is None:
+            raise NgcSemanticError(f"{codes.g_name(code)} is not supported yet")
+    for code in r.m.values():
+        if table.m[code].handler is None:
+            raise NgcSemanticError(f"M{code} is not supported yet")
+    if "t" in r.w:
+        raise NgcSemanticError("T words (tool selection) are not supported yet")
+
+
+def _check_g53(st: State, r: Words, motion: int | None) -> None:
     mode = st.motion if motion is None else motion
     if mode not in (0, 10):
         raise NgcSemanticError("Must use g0 or g1 with g53")
-    if not st.absolute:
+    distance = r.g.get(codes.G_DISTANCE)
+    if not (st.absolute if distance is None else distance == 900):
         raise NgcSemanticError("Cannot use g53 incremental")
 
 
-def _check_axis_users(st: State, motion: int | None, non_modal: int | None) -> None:
-    axis_user = non_modal in codes.G_AXIS_USERS_NON_MODAL
-    if motion is not None and motion != 800 and axis_user:
+def _check_axis_users(st: State, motion: int | None, non_modal: int | None, table: CodeTable) -> None:
+    axis_user = non_modal in table.axis_users
+    if motion is not None and motion != codes.G_CANCEL_MOTION and axis_user:
         raise NgcSemanticError("Cannot use two g codes that both use axis values")
     if axis_user:
         return
-    if motion == 800:
+    if motion == codes.G_CANCEL_MOTION:
         raise NgcSemanticError("Cannot use axis values with g80")
-    if motion is None and st.motion == 800:
+    if motion is None and st.motion == codes.G_CANCEL_MOTION:
         raise NgcSemanticError("Cannot use axis values without a g code that uses them")
 
 
-def _active_motion(st: State, r: Resolved, motion: int | None, non_modal: int | None) -> int | None:
-    """The motion code this block executes, if any."""
-    if motion is not None:
-        return motion
-    if r.has_axes and non_modal not in codes.G_AXIS_USERS_NON_MODAL and st.motion != 800:
-        return st.motion
-    return None
-
-
-def _check_other_words(r: Resolved, active: int | None, non_modal: int | None) -> None:
+def _check_other_words(
+    st: State, r: Words, motion: int | None, non_modal: int | None, table: CodeTable
+) -> None:
+    """Every word beyond X Y Z A B C F S needs a code on the line (or the modal motion its axis
+    words run) that gives it a use."""
     w = r.w
-    g = r.g
-    m = r.m
-    arc = active in _ARC
-    g10 = non_modal == 100
-    m98 = m.get(codes.M_USER) == 98
-    if m.get(codes.M_USER) == 99 and ("p" in w or "l" in w):
+    if r.m.get(codes.M_USER) == 99 and ("p" in w or "l" in w):
         raise NgcSyntaxError("Unexpected character after O-word")
-    if "i" in w and not (arc or g10):
-        raise NgcSemanticError("I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it")
-    if "j" in w and not (arc or g10):
-        raise NgcSemanticError("J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it")
-    if "k" in w and not (arc or g10):
-        raise NgcSemanticError("K word with no G2, G3, G33, G33.1, G76, or G87 to use it")
-    if "l" in w and not (g10 or m98):
-        raise NgcSemanticError(
-            "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or "
-            "NURBS code"
-        )
-    if "p" in w and not (
-        arc or non_modal in (40, 100) or g.get(codes.G_CONTROL) == 640
-        or m.get(codes.M_OVERRIDE, 0) in (50, 51, 52, 53) or m98
-    ):
-        raise NgcSemanticError(_P_MSG)
-    if "q" in w and not (g.get(codes.G_CONTROL) == 640 or g10):
-        raise NgcSemanticError(
-            "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that "
-            "uses it"
-        )
-    if "r" in w and not (arc or g10):
-        raise NgcSemanticError("R word with no g code that uses it")
-    if "d" in w:
-        raise NgcSemanticError(
-            "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it"
-        )
-    if "h" in w:
-        raise NgcSemanticError("H word with no G43 or G76 to use it")
-    if "e" in w:
-        raise NgcSemanticError("E word with no G70, G76, M66, M67 or M68 to use it")
-    if "t" in w:
-        raise NgcSemanticError("T words (tool selection) are not supported yet")
+    if motion is None and r.moves and non_modal not in table.axis_users:
+        motion = st.motion
+    used = "".join(table.g[code].uses for code in r.g.values())
+    used += "".join(table.m[code].uses for code in r.m.values())
+    if motion is not None and codes.G_MOTION not in r.g:
+        used += table.g[motion].uses
+    for letter, message in codes.UNUSED_WORD_MESSAGES:
+        if letter in w and letter not in used:
+            raise NgcSemanticError(message)
+
+
+def _check_g10(r: Words) -> None:
+    """G10's L and P, which rs274 checks before the line runs."""
+    w = r.w
+    l_word = w.get("l")
+    if l_word not in _G10_L:
+        raise NgcSemanticError("Line with G10 does not have L0, L1, L10, L11, L2, or L20")
+    if l_word not in (2.0, 20.0):
+        raise NgcSemanticError("G10 L1/L10/L11 (tool table) is not supported yet")
+    p = w.get("p")
+    if p is None or p < 0 or p >= 10:
+        raise NgcSemanticError(f"P value out of range (0-9) with G10 L{int(l_word)}")
+    if 0.0001 < p - int(p) < 0.5:
+        # rs274 takes P2.5 or P3.99 as system 2 or 3 but refuses P2.4.
+        raise NgcSemanticError("P value not an integer with G10")

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Iterator
-from typing import TYPE_CHECKING, NoReturn
+from typing import TYPE_CHECKING, NoReturn, Protocol
 
 from ..errors import (
     NgcError,
@@ -38,14 +38,34 @@ from ..errors import (
 from ..language.expressions import evaluate
 from ..language.oword import KEYWORDS, MAX_ARGS, NOTHING, PROGRAM, OWord, number_label
 from ..language.parser import Block, skim_oword
+from .fastpath import Compiled, Plain
+from .machine import Machine
 
 if TYPE_CHECKING:
-    from .interpreter import Interpreter
     from .parameters import Parameters
 
-# A line of a body: raw text, a compiled plain line (words, motion, N column, source) or a block.
-Plain = tuple[dict[str, float], "int | None", str, str]
-Entry = str | Block | Plain
+# A line of a body: raw text, a compiled plain line (words, motion, N column, source), a block with
+# a runner of its own, or a block.
+Entry = str | Block | Plain | Compiled
+
+
+class Host(Protocol):
+    """What control flow needs of the interpreter that runs it."""
+
+    machine: Machine
+    file: str | None
+    percent: bool
+    numbered: Iterator[tuple[int, str]]
+
+    def execute(self, block: Block) -> None: ...
+
+    def run_plain(self, w: dict[str, float], code: int | None) -> None: ...
+
+    def checked_line(self, raw: str, number: int) -> str: ...
+
+    def compile_line(self, raw: str, number: int) -> Plain | Block | Compiled: ...
+
+    def finish_percent(self) -> None: ...
 # Call levels rs274 allows below the main program.
 MAX_CALL_DEPTH = 9
 # Safety bound on the loop iterations of one run (endwhile, endrepeat, do-while, continue and
@@ -98,6 +118,8 @@ class Body:
             return entry.rstrip()
         if isinstance(entry, Block):
             return entry.source
+        if isinstance(entry, Compiled):
+            return entry.block.source
         return str(entry[3])
 
 
@@ -106,7 +128,7 @@ class Tape(Body):
 
     __slots__ = ("interp", "numbered")
 
-    def __init__(self, interp: Interpreter, numbered: Iterator[tuple[int, str]], first: int,
+    def __init__(self, interp: Host, numbered: Iterator[tuple[int, str]], first: int,
                  block: Block) -> None:
         super().__init__(interp.file, first, [block])
         self.interp = interp
@@ -181,7 +203,7 @@ def _quote(block: Block, message: str) -> str:
 class Flow:
     """The control-flow state of one interpreter: frames, subroutines, the main program's tape."""
 
-    def __init__(self, interp: Interpreter) -> None:
+    def __init__(self, interp: Host) -> None:
         self.interp = interp
         self.subs: dict[str, Sub] = {}
         self.frames: list[Frame] = []
@@ -205,10 +227,11 @@ class Flow:
     def run(self) -> None:
         """Run lines until the program ends (M2, M30, ``%``); errors propagate."""
         it = self.interp
+        m = it.machine
         frames = self.frames
         execute = it.execute
-        plain = it.convert_plain
-        st = it.state
+        plain = it.run_plain
+        st = m.state
         while True:
             f = frames[-1]
             number = f.pc
@@ -222,31 +245,30 @@ class Flow:
                     return
                 entry = self.compile(f.body, number, entry)
             if entry.__class__ is tuple:
-                w, code, it.label, source = entry
-                it.line = st.line = number
+                w, code, m.label, source = entry  # type: ignore[misc]
+                m.line = st.line = number
                 try:
                     plain(w, code)
                 except NgcError as err:
                     raise err.locate(file=f.body.file, line=number, source=source) from None
+            elif entry.__class__ is Compiled:
+                block, run = entry
+                m.label = block.label
+                m.line = st.line = number
+                try:
+                    run()
+                except NgcError as err:
+                    raise err.locate(file=f.body.file, line=number, source=block.source) from None
             else:
-                block: Block = entry  # type: ignore[assignment]
-                fast = block.fast
-                if fast is not None:
-                    it.label = block.label
-                    it.line = st.line = number
-                    try:
-                        fast()
-                    except NgcError as err:
-                        raise err.locate(file=f.body.file, line=number,
-                                         source=block.source) from None
-                elif block.oword is None:
+                block = entry  # type: ignore[assignment]
+                if block.oword is None:
                     execute(block)
                 elif not (block.delete and st.blocks_deleted):
                     self.oword(f, block)
-            if it.ended:
+            if m.ended:
                 return
 
-    def compile(self, body: Body, number: int, raw: str) -> Plain | Block:
+    def compile(self, body: Body, number: int, raw: str) -> Plain | Block | Compiled:
         """Read a line once; the compiled entry replaces the raw text in its body."""
         try:
             entry = self.interp.compile_line(raw, number)
@@ -264,8 +286,8 @@ class Flow:
     # -- o-words ----------------------------------------------------------------------------
     def oword(self, f: Frame, block: Block) -> None:
         it = self.interp
-        it.label = block.label
-        it.line = it.state.line = block.line
+        it.machine.label = block.label
+        it.machine.line = it.machine.state.line = block.line
         ow = block.oword
         assert ow is not None
         try:
@@ -282,7 +304,7 @@ class Flow:
                 "it runs forever (raise the limit with --max-iterations)")
 
     def label(self, ow: OWord) -> str:
-        return ow.label_of(self.interp.params)
+        return ow.label_of(self.interp.machine.params)
 
     def bind(self, f: Frame, block: Block, label: str, keyword: str) -> None:
         """Record a construct's label in its scope; reusing it elsewhere is an error."""
@@ -309,14 +331,14 @@ class Flow:
         return bound
 
     def condition(self, ow: OWord) -> bool:
-        return evaluate(ow.args[0], self.interp.params) != 0.0
+        return evaluate(ow.args[0], self.interp.machine.params) != 0.0
 
     def skip(self, f: Frame, start: int, label: str, kinds: tuple[str, ...], mode: int,
              seeking: Block | None = None) -> Mark:
         """Pass over the lines after ``start`` to the o-word ``label`` with one of ``kinds``."""
         it = self.interp
         body = f.body
-        params = it.params
+        params = it.machine.params
         number = start
         while True:
             number += 1
@@ -340,7 +362,7 @@ class Flow:
                     prefix = "O#" if mode == BRANCH else "O"
                     raise NgcProgramError(f"Failed to find sub '{prefix}{label}' before EOF",
                                           file=body.file, line=number, source=entry.rstrip())
-                if it.state.blocks_deleted and entry.lstrip(" \t").startswith("/"):
+                if it.machine.state.blocks_deleted and entry.lstrip(" \t").startswith("/"):
                     continue
                 try:
                     ow = skim_oword(entry, number)
@@ -350,7 +372,7 @@ class Flow:
                     raise err.locate(file=body.file, line=number, source=entry.rstrip()) from None
                 source = entry.rstrip()
             else:
-                if entry.delete and it.state.blocks_deleted:
+                if entry.delete and it.machine.state.blocks_deleted:
                     continue
                 ow = entry.oword
                 source = entry.source
@@ -365,7 +387,7 @@ class Flow:
                     value = [evaluate(a, _Skimming(params)) for a in ow.args]
                     if ow.keyword == "return":
                         continue
-                    st = it.state
+                    st = it.machine.state
                     st.value, st.value_returned = (value[0], 1.0) if value else (0.0, 0.0)
                     return Mark(number, ow, source)
                 if ow.keyword in kinds and self.label(ow) == label:
@@ -463,7 +485,7 @@ class Flow:
         self.bind(f, block, label, "repeat")
         left = f.active.get(label)
         if left is None:
-            left = round(evaluate(ow.args[0], self.interp.params))  # halves to even, as rs274
+            left = round(evaluate(ow.args[0], self.interp.machine.params))  # halves to even, as rs274
         if left > 0:
             f.active[label] = left - 1
         else:
@@ -513,7 +535,7 @@ class Flow:
 
     def _call(self, f: Frame, block: Block, ow: OWord) -> None:
         it = self.interp
-        params = it.params
+        params = it.machine.params
         label = self.label(ow)
         if len(ow.args) > MAX_ARGS:
             raise NgcSemanticError("Too many subroutine parameters")
@@ -533,7 +555,7 @@ class Flow:
         if len(self.frames) > self.max_call_depth:
             raise NgcRuntimeError("Too many subroutine levels")
         self.frames.append(frame)
-        self.interp.state.call_level = len(self.frames) - 1
+        self.interp.machine.state.call_level = len(self.frames) - 1
 
     def refuse(self, sub: Sub, message: str) -> NoReturn:
         raise NgcSemanticError(message, file=sub.body.file, line=sub.start,
@@ -577,19 +599,19 @@ class Flow:
         if f.sub.fanuc:
             raise NgcSemanticError("Fanuc 'O....' subroutine definition must end with 'M99'")
         if ow.args:
-            it.state.value = evaluate(ow.args[0], it.params)
-            it.state.value_returned = 1.0
+            it.machine.state.value = evaluate(ow.args[0], it.machine.params)
+            it.machine.state.value_returned = 1.0
         else:
-            it.state.value = it.state.value_returned = 0.0
-        it.params.numbered[1 : ARGUMENT_PARAMETERS + 1] = f.saved
-        it.params.locals.pop()
+            it.machine.state.value = it.machine.state.value_returned = 0.0
+        it.machine.params.numbered[1 : ARGUMENT_PARAMETERS + 1] = f.saved
+        it.machine.params.locals.pop()
         self.pop()
 
     _endsub = _return
 
     def pop(self) -> None:
         self.frames.pop()
-        self.interp.state.call_level = len(self.frames) - 1
+        self.interp.machine.state.call_level = len(self.frames) - 1
 
     def _program(self, f: Frame, block: Block, ow: OWord) -> None:
         """``o100`` alone: a program title or the start of a numbered program; nothing to run."""

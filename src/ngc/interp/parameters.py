@@ -14,6 +14,7 @@ from collections.abc import Callable
 from ..config.ini import Ini, ini_parameter
 from ..errors import NgcRuntimeError
 from ..language.parser import MAX_PARAMETER
+from .frames import to_machine
 from .state import AXES, State
 
 # System parameter numbers (overview.adoc, "Numbered Parameters").
@@ -45,8 +46,6 @@ def _pos(axis: int) -> Getter:
 
 
 def _machine(s: State, axis: int) -> float:
-    from .handlers.coordinates import to_machine
-
     return to_machine(s, s.pos)[axis]
 
 

@@ -6,6 +6,7 @@ see.  Blocks whose values are all constants were resolved by the parser already 
 
 from __future__ import annotations
 
+from ..language.codes import CodeTable
 from ..language.expressions import ParamContext
 from ..language.parser import COMMENT, PARAM, WORD, Block, check_index
 from ..language.words import Words, add_word
@@ -14,7 +15,7 @@ from .parameters import Parameters, check_number_writable, check_writable
 Resolved = Words
 
 
-def resolve(block: Block, params: Parameters) -> Words:
+def resolve(block: Block, params: Parameters, table: CodeTable) -> Words:
     """Evaluate ``block``'s items in source order (rs274 reads a line left to right)."""
     cached = block.resolved
     if cached is not None:
@@ -23,7 +24,7 @@ def resolve(block: Block, params: Parameters) -> Words:
     for kind, key, value in block.items:
         if kind == WORD:
             v = value if type(value) is float else value(params)  # type: ignore[operator]
-            add_word(r, key, v)  # type: ignore[arg-type]
+            add_word(r, key, v, table)  # type: ignore[arg-type]
         elif kind == PARAM:
             _param(r, key, value, params)
         elif kind == COMMENT:

@@ -67,7 +67,7 @@ class State:
         self.control_mode = 610  # G61 610, G61.1 611, G64 640
         self.path_tolerance = 0.0  # G64 P
         self.naive_tolerance = 0.0  # G64 Q
-        self.retract_r = True  # G98 True, G99 False
+        self.retract_r = True  # G99 True (R plane, as rs274 starts), G98 False
         self.ccomp = 400  # G40 400
         self.tool_offset = False  # G43 on
         self.lathe_diameter = False  # G7

@@ -1,22 +1,35 @@
-"""THE code table: every G and M code ngc knows, with its modal group and execution step.
+"""THE code table: every G and M code of a dialect, one row each.
 
-G codes are integers: the G number times ten (G38.2 -> 382, G0 -> 0), as LinuxCNC does, so no float is
-ever compared.  Modal groups follow overview.adoc, "Modal Groups"; the order of execution is
-``Interpreter.convert`` (overview.adoc, "G-code Order of Execution").  ``implemented`` marks codes
-whose handlers exist; the others are known to the language (so a line using them reads fine) but
-rejected with a clear error when executed.
+A row says everything the interpreter needs to know about a code: its modal group, its step in the
+order of execution (overview.adoc, "G-code Order of Execution"), the words it gives a use to, the
+words it requires, and the name of its handler.  Reading (``words.add_word``), checking
+(``interp/check.py``) and dispatch (``interp/dispatch.py``) are loops over the rows, so adding a
+code is one row here and one handler in ``interp/handlers``.
+
+The table is a value (:class:`CodeTable`): the interpreter is given one (:data:`LINUXCNC` by
+default); another dialect brings its own.  G codes are integers, the G number times ten (G38.2 ->
+382, G0 -> 0), as LinuxCNC does, so no float is ever compared.  A row whose handler is ``None`` is
+a code the language knows but ngc does not run yet: a line using it reads fine and is refused as
+"G41 is not supported yet" before anything on it executes.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from types import MappingProxyType
 from typing import NamedTuple
 
 
 class Code(NamedTuple):
-    """One G or M code: its modal group and whether its handler exists yet."""
+    """One G or M code."""
 
     group: int
-    implemented: bool = True
+    step: int
+    handler: str | None  # name in the interpreter's handler registry; None: not supported yet
+    uses: str = ""  # letters (beyond X Y Z A B C F S) this code gives a use to
+    axes: bool = False  # a group-0 code that takes the line's axis words (motion is suspended)
+    requires: str = ""  # the line must hold one of these letters ("xyzabc": an axis word) ...
+    missing: str = ""  # ... or this is the error
 
 
 # G-code modal groups (overview.adoc table "G-code Modal Groups").
@@ -45,148 +58,245 @@ M_OVERRIDE = 9
 M_USER = 10
 M_STATE = 11
 
-_NO = False
+G_CANCEL_MOTION = 800  # G80: gives way to another motion code on its line
+G_MACHINE_COORDINATES = 530  # G53: modifies the line's motion
 
-G_CODES: dict[int, Code] = {
+# Steps of the order of execution (overview.adoc, "G-code Order of Execution"); the words F, S
+# and T and the comment have theirs too (WORD_STEPS).
+STEP_COMMENT = 1
+STEP_FEED_MODE = 2
+STEP_FEED = 3
+STEP_SPEED = 4
+STEP_TOOL = 5
+STEP_IO = 6
+STEP_TOOL_CHANGE = 7
+STEP_SPINDLE = 8
+STEP_STATE = 9
+STEP_COOLANT = 10
+STEP_OVERRIDE = 11
+STEP_USER_M = 12
+STEP_DWELL = 13
+STEP_PLANE = 14
+STEP_UNITS = 15
+STEP_LATHE = 16
+STEP_CUTTER_COMP = 17
+STEP_TOOL_LENGTH = 18
+STEP_SPINDLE_MODE = 19
+STEP_COORD_SYSTEM = 20
+STEP_CONTROL = 21
+STEP_DISTANCE = 22
+STEP_ARC_DISTANCE = 23
+STEP_RETRACT = 24
+STEP_NON_MODAL = 25
+STEP_MOTION = 26
+STEP_STOP = 27
+
+_ARC_WORDS = "ijkrp"
+_AXES = "xyzabc"
+
+
+def _motion(handler: str | None, uses: str = "") -> Code:
+    return Code(G_MOTION, STEP_MOTION, handler, uses)
+
+
+def _no(group: int, step: int, uses: str = "") -> Code:
+    """A code the language knows and ngc does not run yet."""
+    return Code(group, step, None, uses)
+
+
+_G: dict[int, Code] = {
     # group 0: non-modal
-    40: Code(G_NON_MODAL),  # G4 dwell
-    100: Code(G_NON_MODAL),  # G10 set coordinate data / tools
-    280: Code(G_NON_MODAL),  # G28
-    281: Code(G_NON_MODAL),  # G28.1
-    300: Code(G_NON_MODAL),  # G30
-    301: Code(G_NON_MODAL),  # G30.1
-    520: Code(G_NON_MODAL),  # G52
-    530: Code(G_NON_MODAL),  # G53
-    920: Code(G_NON_MODAL),  # G92
-    921: Code(G_NON_MODAL),  # G92.1
-    922: Code(G_NON_MODAL),  # G92.2
-    923: Code(G_NON_MODAL),  # G92.3
+    40: Code(G_NON_MODAL, STEP_DWELL, "dwell", "p", requires="p", missing="Dwell time missing with g4"),
+    100: Code(G_NON_MODAL, STEP_NON_MODAL, "g10", "ijklpqr", axes=True),
+    280: Code(G_NON_MODAL, STEP_NON_MODAL, "home", axes=True),
+    281: Code(G_NON_MODAL, STEP_NON_MODAL, "home_store"),
+    300: Code(G_NON_MODAL, STEP_NON_MODAL, "home", axes=True),
+    301: Code(G_NON_MODAL, STEP_NON_MODAL, "home_store"),
+    520: Code(G_NON_MODAL, STEP_NON_MODAL, "g52", axes=True, requires=_AXES,
+              missing="All axes missing with g52 or g92"),
+    530: Code(G_NON_MODAL, STEP_MOTION, ""),  # G53: read by the motion handlers
+    920: Code(G_NON_MODAL, STEP_NON_MODAL, "g92", axes=True, requires=_AXES,
+              missing="All axes missing with g52 or g92"),
+    921: Code(G_NON_MODAL, STEP_NON_MODAL, "g92_reset"),
+    922: Code(G_NON_MODAL, STEP_NON_MODAL, "g92_reset"),
+    923: Code(G_NON_MODAL, STEP_NON_MODAL, "g92_reset"),
     # group 1: motion
-    0: Code(G_MOTION),
-    10: Code(G_MOTION),
-    20: Code(G_MOTION),
-    30: Code(G_MOTION),
-    50: Code(G_MOTION, _NO),  # G5 cubic spline
-    51: Code(G_MOTION, _NO),  # G5.1 quadratic spline
-    52: Code(G_MOTION, _NO),  # G5.2 NURBS
-    330: Code(G_MOTION, _NO),  # G33 spindle synchronized
-    331: Code(G_MOTION, _NO),  # G33.1 rigid tap
-    382: Code(G_MOTION, _NO),
-    383: Code(G_MOTION, _NO),
-    384: Code(G_MOTION, _NO),
-    385: Code(G_MOTION, _NO),
-    730: Code(G_MOTION, _NO),
-    760: Code(G_MOTION, _NO),
-    800: Code(G_MOTION),  # G80 cancel motion
-    810: Code(G_MOTION, _NO),
-    820: Code(G_MOTION, _NO),
-    830: Code(G_MOTION, _NO),
-    840: Code(G_MOTION, _NO),
-    850: Code(G_MOTION, _NO),
-    860: Code(G_MOTION, _NO),
-    870: Code(G_MOTION, _NO),
-    880: Code(G_MOTION, _NO),
-    890: Code(G_MOTION, _NO),
+    0: _motion("traverse"),
+    10: _motion("feed"),
+    20: _motion("arc", _ARC_WORDS),
+    30: _motion("arc", _ARC_WORDS),
+    50: _motion(None, "ijpq"),  # G5 cubic spline
+    51: _motion(None, "ij"),  # G5.1 quadratic spline
+    52: _motion(None, "pl"),  # G5.2 NURBS
+    330: _motion(None, "k"),  # G33 spindle synchronized
+    331: _motion(None, "ik"),  # G33.1 rigid tap
+    382: _motion(None),
+    383: _motion(None),
+    384: _motion(None),
+    385: _motion(None),
+    730: _motion(None, "rlq"),
+    760: _motion(None, "ijklpqrhe"),
+    800: _motion("cancel_motion"),
+    810: _motion(None, "rl"),
+    820: _motion(None, "rlp"),
+    830: _motion(None, "rlq"),
+    840: _motion(None, "rlp"),
+    850: _motion(None, "rl"),
+    860: _motion(None, "rlp"),
+    870: _motion(None, "rlijk"),
+    880: _motion(None, "rlp"),
+    890: _motion(None, "rlp"),
     # group 2: plane
-    170: Code(G_PLANE),
-    171: Code(G_PLANE),
-    180: Code(G_PLANE),
-    181: Code(G_PLANE),
-    190: Code(G_PLANE),
-    191: Code(G_PLANE),
+    170: Code(G_PLANE, STEP_PLANE, "plane"),
+    171: Code(G_PLANE, STEP_PLANE, "plane"),
+    180: Code(G_PLANE, STEP_PLANE, "plane"),
+    181: Code(G_PLANE, STEP_PLANE, "plane"),
+    190: Code(G_PLANE, STEP_PLANE, "plane"),
+    191: Code(G_PLANE, STEP_PLANE, "plane"),
     # group 3 / 4: distance modes
-    900: Code(G_DISTANCE),
-    910: Code(G_DISTANCE),
-    901: Code(G_ARC_DISTANCE),
-    911: Code(G_ARC_DISTANCE),
+    900: Code(G_DISTANCE, STEP_DISTANCE, "distance_mode"),
+    910: Code(G_DISTANCE, STEP_DISTANCE, "distance_mode"),
+    901: Code(G_ARC_DISTANCE, STEP_ARC_DISTANCE, "arc_distance_mode"),
+    911: Code(G_ARC_DISTANCE, STEP_ARC_DISTANCE, "arc_distance_mode"),
     # group 5: feed mode
-    930: Code(G_FEED_MODE),
-    940: Code(G_FEED_MODE),
-    950: Code(G_FEED_MODE),
+    930: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode"),
+    940: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode"),
+    950: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode"),
     # group 6: units
-    200: Code(G_UNITS),
-    210: Code(G_UNITS),
+    200: Code(G_UNITS, STEP_UNITS, "units"),
+    210: Code(G_UNITS, STEP_UNITS, "units"),
     # group 7: cutter radius compensation
-    400: Code(G_CUTTER_COMP),
-    410: Code(G_CUTTER_COMP, _NO),
-    411: Code(G_CUTTER_COMP, _NO),
-    420: Code(G_CUTTER_COMP, _NO),
-    421: Code(G_CUTTER_COMP, _NO),
+    400: Code(G_CUTTER_COMP, STEP_CUTTER_COMP, "cutter_comp_off"),
+    410: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "d"),
+    411: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "dl"),
+    420: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "d"),
+    421: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "dl"),
     # group 8: tool length offset
-    430: Code(G_TOOL_LENGTH, _NO),
-    431: Code(G_TOOL_LENGTH, _NO),
-    432: Code(G_TOOL_LENGTH, _NO),
-    490: Code(G_TOOL_LENGTH, _NO),
+    430: _no(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "h"),
+    431: _no(G_TOOL_LENGTH, STEP_TOOL_LENGTH),
+    432: _no(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "h"),
+    490: Code(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "tool_length_off"),
     # group 10: canned-cycle return mode
-    980: Code(G_RETRACT),
-    990: Code(G_RETRACT),
+    980: Code(G_RETRACT, STEP_RETRACT, "retract_mode"),
+    990: Code(G_RETRACT, STEP_RETRACT, "retract_mode"),
     # group 12: coordinate system
-    540: Code(G_COORD_SYSTEM),
-    550: Code(G_COORD_SYSTEM),
-    560: Code(G_COORD_SYSTEM),
-    570: Code(G_COORD_SYSTEM),
-    580: Code(G_COORD_SYSTEM),
-    590: Code(G_COORD_SYSTEM),
-    591: Code(G_COORD_SYSTEM),
-    592: Code(G_COORD_SYSTEM),
-    593: Code(G_COORD_SYSTEM),
+    540: Code(G_COORD_SYSTEM, STEP_COORD_SYSTEM, "select_system"),
+    550: Code(G_COORD_SYSTEM, STEP_COORD_SYSTEM, "select_system"),
+    560: Code(G_COORD_SYSTEM, STEP_COORD_SYSTEM, "select_system"),
+    570: Code(G_COORD_SYSTEM, STEP_COORD_SYSTEM, "select_system"),
+    580: Code(G_COORD_SYSTEM, STEP_COORD_SYSTEM, "select_system"),
+    590: Code(G_COORD_SYSTEM, STEP_COORD_SYSTEM, "select_system"),
+    591: Code(G_COORD_SYSTEM, STEP_COORD_SYSTEM, "select_system"),
+    592: Code(G_COORD_SYSTEM, STEP_COORD_SYSTEM, "select_system"),
+    593: Code(G_COORD_SYSTEM, STEP_COORD_SYSTEM, "select_system"),
     # group 13: path control
-    610: Code(G_CONTROL),
-    611: Code(G_CONTROL),
-    640: Code(G_CONTROL),
+    610: Code(G_CONTROL, STEP_CONTROL, "control_mode"),
+    611: Code(G_CONTROL, STEP_CONTROL, "control_mode"),
+    640: Code(G_CONTROL, STEP_CONTROL, "control_mode", "pq"),
     # group 14: spindle speed mode
-    960: Code(G_SPINDLE_MODE, _NO),
-    970: Code(G_SPINDLE_MODE),
+    960: _no(G_SPINDLE_MODE, STEP_SPINDLE_MODE, "d"),
+    970: Code(G_SPINDLE_MODE, STEP_SPINDLE_MODE, ""),  # G97: the mode rs274 starts in
     # group 15: lathe diameter / radius mode
-    70: Code(G_LATHE, _NO),
-    80: Code(G_LATHE, _NO),
+    70: _no(G_LATHE, STEP_LATHE),
+    80: _no(G_LATHE, STEP_LATHE),
 }
 
-M_CODES: dict[int, Code] = {
-    0: Code(M_STOP),
-    1: Code(M_STOP),
-    2: Code(M_STOP),
-    30: Code(M_STOP),
-    60: Code(M_STOP),
-    3: Code(M_SPINDLE),
-    4: Code(M_SPINDLE),
-    5: Code(M_SPINDLE),
-    19: Code(M_SPINDLE, _NO),
-    6: Code(M_TOOL, _NO),
-    61: Code(M_TOOL, _NO),
-    7: Code(M_COOLANT),
-    8: Code(M_COOLANT),
-    9: Code(M_COOLANT),
-    48: Code(M_OVERRIDE),
-    49: Code(M_OVERRIDE),
-    50: Code(M_OVERRIDE),
-    51: Code(M_OVERRIDE),
-    52: Code(M_OVERRIDE),
-    53: Code(M_OVERRIDE),
-    62: Code(M_IO, _NO),
-    63: Code(M_IO, _NO),
-    64: Code(M_IO, _NO),
-    65: Code(M_IO, _NO),
-    66: Code(M_IO, _NO),
-    67: Code(M_IO, _NO),
-    68: Code(M_IO, _NO),
-    70: Code(M_STATE, _NO),
-    71: Code(M_STATE, _NO),
-    72: Code(M_STATE, _NO),
-    73: Code(M_STATE, _NO),
-    98: Code(M_USER, _NO),
-    99: Code(M_USER, _NO),
+_M: dict[int, Code] = {
+    0: Code(M_STOP, STEP_STOP, "stop"),
+    1: Code(M_STOP, STEP_STOP, "stop"),
+    2: Code(M_STOP, STEP_STOP, "stop"),
+    30: Code(M_STOP, STEP_STOP, "stop"),
+    60: Code(M_STOP, STEP_STOP, "stop"),
+    3: Code(M_SPINDLE, STEP_SPINDLE, "spindle"),
+    4: Code(M_SPINDLE, STEP_SPINDLE, "spindle"),
+    5: Code(M_SPINDLE, STEP_SPINDLE, "spindle"),
+    19: _no(M_SPINDLE, STEP_SPINDLE, "rpq"),
+    6: _no(M_TOOL, STEP_TOOL_CHANGE),
+    61: _no(M_TOOL, STEP_TOOL_CHANGE, "q"),
+    7: Code(M_COOLANT, STEP_COOLANT, "coolant"),
+    8: Code(M_COOLANT, STEP_COOLANT, "coolant"),
+    9: Code(M_COOLANT, STEP_COOLANT, "coolant"),
+    48: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides"),
+    49: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides"),
+    50: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
+    51: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
+    52: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
+    53: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
+    62: _no(M_IO, STEP_IO, "p"),
+    63: _no(M_IO, STEP_IO, "p"),
+    64: _no(M_IO, STEP_IO, "p"),
+    65: _no(M_IO, STEP_IO, "p"),
+    66: _no(M_IO, STEP_IO, "plqe"),
+    67: _no(M_IO, STEP_IO, "eq"),
+    68: _no(M_IO, STEP_IO, "eq"),
+    70: _no(M_STATE, STEP_STATE),
+    71: _no(M_STATE, STEP_STATE),
+    72: _no(M_STATE, STEP_STATE),
+    73: _no(M_STATE, STEP_STATE),
+    98: Code(M_USER, STEP_USER_M, "subprogram", "pl"),  # run by the control flow
+    99: Code(M_USER, STEP_USER_M, "subprogram"),
 }
 
-# G codes whose axis words are theirs (overview.adoc, "Modal Groups": group 0 codes that use axis
-# words suspend the motion mode for the line).
-G_AXIS_USERS_NON_MODAL = frozenset({100, 280, 300, 520, 920})
+# The words that take a step of their own (and a handler), as codes do.  T is not supported yet.
+WORD_STEPS: Mapping[str, tuple[int, str | None]] = MappingProxyType({
+    "f": (STEP_FEED, "feed_rate"),
+    "s": (STEP_SPEED, "spindle_speed"),
+    "t": (STEP_TOOL, None),
+})
 
-AXIS_LETTERS = "xyzabc"
+# A word that no code on its line gives a use to: rs274's message, in the order rs274 checks.
+UNUSED_WORD_MESSAGES: tuple[tuple[str, str], ...] = (
+    ("i", "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it"),
+    ("j", "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it"),
+    ("k", "K word with no G2, G3, G33, G33.1, G76, or G87 to use it"),
+    ("l", "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or "
+          "NURBS code"),
+    ("p", "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 "
+          "M64 M65 M66 M98 or user M code to use it"),
+    ("q", "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that "
+          "uses it"),
+    ("r", "R word with no g code that uses it"),
+    ("d", "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it"),
+    ("h", "H word with no G43 or G76 to use it"),
+    ("e", "E word with no G70, G76, M66, M67 or M68 to use it"),
+)
+
+AXIS_LETTERS = _AXES
 
 # Polar coordinate words: distance @ and angle ^ in the XY plane (overview.adoc, "Polar
 # Coordinates").
 POLAR_LETTERS = "@^"
+
+# Letters that every block may carry without a code that uses them.
+FREE_LETTERS = frozenset(AXIS_LETTERS + "fs")
+
+
+class CodeTable:
+    """A dialect's G and M codes, and what is derived from them once."""
+
+    __slots__ = ("axis_users", "g", "g_by_value", "m", "motion_by_value", "plain_arcs")
+
+    def __init__(self, g: Mapping[int, Code], m: Mapping[int, Code]) -> None:
+        self.g = MappingProxyType(dict(g))
+        self.m = MappingProxyType(dict(m))
+        # Every G code by its value as read (1.0 -> (group, 10)), for the common exact values.
+        self.g_by_value: Mapping[float, tuple[int, int]] = MappingProxyType(
+            {code / 10: (row.group, code) for code, row in g.items()}
+        )
+        # Motion codes that run, by the value of their G word: the codes a plain line may hold.
+        self.motion_by_value: Mapping[float, int] = MappingProxyType({
+            code / 10: code for code, row in g.items()
+            if row.group == G_MOTION and row.handler and code != G_CANCEL_MOTION
+        })
+        # Motion codes whose plain lines may carry their own words (arcs: I J K R P).
+        self.plain_arcs: Mapping[int, frozenset[str]] = MappingProxyType({
+            code: FREE_LETTERS | frozenset(row.uses) for code, row in g.items()
+            if row.group == G_MOTION and row.handler and row.uses
+        })
+        self.axis_users = frozenset(code for code, row in g.items() if row.axes)
+
+
+LINUXCNC = CodeTable(_G, _M)
 
 
 def g_name(code: int) -> str:

@@ -9,11 +9,10 @@ messages are rs274's: overview.adoc "Format of a line", "Numbers", "Parameters",
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
 
 from ..errors import NgcError, NgcSyntaxError
 from . import expressions as ex
-from .codes import POLAR_LETTERS
+from .codes import LINUXCNC, POLAR_LETTERS, CodeTable
 from .lexer import normalize
 from .oword import (
     CONDITION,
@@ -58,9 +57,7 @@ def n_label(digits: str | None) -> str:
 class Block:
     """One parsed line.  ``items`` are ``(kind, key, value)`` tuples in source order."""
 
-    __slots__ = (
-        "delete", "fast", "items", "label", "line", "n_number", "oword", "resolved", "source",
-    )
+    __slots__ = ("delete", "items", "label", "line", "n_number", "oword", "resolved", "source")
 
     def __init__(self, line: int, source: str) -> None:
         self.line = line
@@ -72,12 +69,13 @@ class Block:
         self.oword: OWord | None = None
         # The block's words when every value on the line is a constant (read once, reused).
         self.resolved: Words | None = None
-        # A specialised runner for a block run many times (see ngc.interp.compiled).
-        self.fast: Callable[[], None] | None = None
 
 
-def parse_line(raw: str, line: int = 0) -> Block:
+def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool = True) -> Block:
     """Parse one source line (without its newline) into a :class:`Block`.
+
+    ``table`` is the dialect's code table (unknown codes and modal clashes are read errors);
+    ``fast`` lets a line of plain words with literal numbers take :func:`split_plain`.
 
     >>> b = parse_line("N10 G1 X1.5 Y[2*3] (cut)")
     >>> b.label, [(k, key) for k, key, _ in b.items]
@@ -90,9 +88,9 @@ def parse_line(raw: str, line: int = 0) -> Block:
         if text.startswith("/"):
             block.delete = True
             text = text[1:]
-        if not _fast(block, text):
+        if not (fast and _fast(block, text, table)):
             _Reader(text, block).read_line()
-            _resolve_constant(block)
+            _resolve_constant(block, table)
     except NgcError as err:
         if err.column is not None:
             err.column = raw_column(raw, err.column - 1)
@@ -121,7 +119,7 @@ def skim_oword(raw: str, line: int = 0) -> OWord | None:
     return block.oword
 
 
-def _fast(block: Block, text: str) -> bool:
+def _fast(block: Block, text: str, table: CodeTable) -> bool:
     """Plain words with literal numbers: resolved here, once (see :func:`split_plain`)."""
     found = split_plain(text)
     if found is None:
@@ -129,7 +127,7 @@ def _fast(block: Block, text: str) -> bool:
     w, g, digits = found
     if digits is not None:
         _set_number(block, digits)
-    block.resolved = words_of(w, g)
+    block.resolved = words_of(w, g, table)
     return True
 
 
@@ -162,23 +160,23 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
     return w, w.pop("g", None), digits
 
 
-def words_of(w: dict[str, float], g: float | None) -> Words:
+def words_of(w: dict[str, float], g: float | None, table: CodeTable) -> Words:
     """The :class:`Words` of a line read by :func:`split_plain`."""
     words = Words()
     if g is not None:
-        add_word(words, "g", g)
+        add_word(words, "g", g, table)
     words.w = w
     return words.finish()
 
 
-def _resolve_constant(block: Block) -> None:
+def _resolve_constant(block: Block, table: CodeTable) -> None:
     """Resolve a block now if nothing on it can change between executions."""
     words = Words()
     for kind, key, value in block.items:
         if kind == PARAM or not isinstance(value, float | None):
             return
         if kind == WORD:
-            add_word(words, key, value)  # type: ignore[arg-type]
+            add_word(words, key, value, table)  # type: ignore[arg-type]
         else:
             words.comment = key  # type: ignore[assignment]
     block.resolved = words.finish()
@@ -190,9 +188,10 @@ def _set_number(block: Block, digits: str) -> None:
 
 
 def _show_char(c: str) -> str:
-    """A character as rs274 shows it: bytes above 127 in octal (the program is read as bytes)."""
+    """A character as rs274 shows it: control characters and bytes past ``z`` as three octal digits
+    (the program is read as bytes)."""
     code = ord(c)
-    return f"\\{code:o}" if code > 127 else c
+    return f"\\{code:03o}" if code < 32 or code > 122 else c
 
 
 def raw_column(raw: str, index: int) -> int:

@@ -2,19 +2,20 @@
 
 ``Words`` holds the G codes by modal group, the M codes by modal group and the other words by
 letter, plus the line's queued parameter settings and its (last) comment.  :func:`add_word` applies
-rs274's read-time rules (repeated words, modal-group clashes, integer words) — shared by the
-parser's constant fast path and the interpreter's resolve phase.
+rs274's read-time rules (repeated words, unknown codes, modal-group clashes, integer words) with the
+dialect's code table — shared by the parser's constant lines and the interpreter's resolve phase.
 """
 
 from __future__ import annotations
 
 from ..errors import NgcSemanticError, NgcSyntaxError
-from . import codes
+from .codes import AXIS_LETTERS, FREE_LETTERS, G_CANCEL_MOTION, G_MOTION, POLAR_LETTERS, CodeTable
 
 INTEGER_LETTERS = frozenset("dhlt")
-_AXES = frozenset(codes.AXIS_LETTERS + codes.POLAR_LETTERS)
-# Letters that every block may carry without a code that uses them.
-FREE_LETTERS = frozenset(codes.AXIS_LETTERS + "fs")
+_AXES = frozenset(AXIS_LETTERS + POLAR_LETTERS)
+# Words that run the modal motion on a line with no motion code: axes, and arc centers (rs274 cuts
+# a full circle for a line of ``I0.5`` alone in G2).
+_MOVES = _AXES | frozenset("ijk")
 # M codes 100..199 are user M codes, looked up as files (not available to the standalone machine).
 M_USER_LIMIT = 199
 MAX_M_PER_LINE = 4
@@ -23,7 +24,7 @@ MAX_M_PER_LINE = 4
 class Words:
     """``g``/``m``: modal group -> code (G times ten); ``w``: letter -> value."""
 
-    __slots__ = ("assigns", "comment", "g", "has_axes", "m", "others", "plain", "w")
+    __slots__ = ("assigns", "comment", "g", "has_axes", "m", "moves", "others", "w")
 
     def __init__(self) -> None:
         self.g: dict[int, int] = {}
@@ -31,23 +32,16 @@ class Words:
         self.w: dict[str, float] = {}
         self.assigns: list[tuple[int | str, float]] = []
         self.comment: str | None = None
-        self.has_axes = False  # any of X Y Z A B C
+        self.has_axes = False  # any of X Y Z A B C @ ^
+        self.moves = False  # any word that runs the modal motion: an axis word, I J K
         self.others = False  # any word that needs a code to use it (not X Y Z A B C F S)
-        self.plain = False  # only a motion code, axis, F and S words: the interpreter's fast path
 
     def finish(self) -> Words:
         """Compute the summary flags once all words are in."""
         keys = self.w.keys()
         self.has_axes = not _AXES.isdisjoint(keys)
+        self.moves = not _MOVES.isdisjoint(keys)
         self.others = not FREE_LETTERS.issuperset(keys)
-        g = self.g
-        self.plain = (
-            not self.others
-            and not self.m
-            and self.comment is None
-            and not self.assigns
-            and (not g or (len(g) == 1 and codes.G_MOTION in g))
-        )
         return self
 
 
@@ -59,12 +53,12 @@ def integer_value(value: float) -> int:
     return int(k)
 
 
-def add_word(words: Words, letter: str, v: float) -> None:
+def add_word(words: Words, letter: str, v: float, table: CodeTable) -> None:
     """Add one word, raising rs274's read errors."""
     if letter == "g":
-        _g_word(words, v)
+        _g_word(words, v, table)
     elif letter == "m":
-        _m_word(words, v)
+        _m_word(words, v, table)
     else:
         w = words.w
         if letter in w:
@@ -74,19 +68,10 @@ def add_word(words: Words, letter: str, v: float) -> None:
         w[letter] = v
 
 
-# Every known G code by its value as read (1.0 -> G1), for the common exact values.
-G_BY_VALUE: dict[float, tuple[int, int]] = {
-    code / 10: (known.group, code) for code, known in codes.G_CODES.items()
-}
-
-
-def _g_word(words: Words, v: float) -> None:
-    hit = G_BY_VALUE.get(v)
+def _g_word(words: Words, v: float, table: CodeTable) -> None:
+    hit = table.g_by_value.get(v)
     if hit is not None:
-        group, code = hit
-        if group in words.g:
-            raise NgcSemanticError("Two g codes used from same modal group")
-        words.g[group] = code
+        _set_g(words.g, *hit)
         return
     if v < 0.0:
         raise NgcSyntaxError("Negative g code used")
@@ -94,21 +79,31 @@ def _g_word(words: Words, v: float) -> None:
     code = round(tenths)
     if abs(tenths - code) > 0.001 or code > 999:
         raise NgcSyntaxError("G-code out of range")
-    known = codes.G_CODES.get(code)
+    known = table.g.get(code)
     if known is None:
         raise NgcSemanticError("Unknown g code used")
-    if known.group in words.g:
-        raise NgcSemanticError("Two g codes used from same modal group")
-    words.g[known.group] = code
+    _set_g(words.g, known.group, code)
 
 
-def _m_word(words: Words, v: float) -> None:
+def _set_g(g: dict[int, int], group: int, code: int) -> None:
+    """One G code into its modal group.  G80 gives way to any other motion code on the line (rs274
+    reads ``G1 G80 X1`` as ``G1 X1``); any other second code of a group is an error."""
+    old = g.get(group)
+    if old is not None:
+        if group != G_MOTION or (old != G_CANCEL_MOTION and code != G_CANCEL_MOTION):
+            raise NgcSemanticError("Two g codes used from same modal group")
+        if code == G_CANCEL_MOTION:
+            return
+    g[group] = code
+
+
+def _m_word(words: Words, v: float, table: CodeTable) -> None:
     code = integer_value(v)
     if code < 0:
         raise NgcSyntaxError("Negative m code used")
     if code > M_USER_LIMIT:
         raise NgcSemanticError(f"M-code greater than {M_USER_LIMIT}: M{code}")
-    known = codes.M_CODES.get(code)
+    known = table.m.get(code)
     if known is None:
         raise NgcSemanticError(f"Unknown m code used: M{code}")
     if known.group in words.m:

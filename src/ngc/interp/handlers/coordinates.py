@@ -9,12 +9,12 @@ inches (rs274's user units); rotary axes are never converted.
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING
 
 from ...canon import ops
 from ...errors import NgcSemanticError
 from ...language.codes import AXIS_LETTERS
+from ..frames import Vec, rotate, to_machine, to_program
 from ..parameters import (
     COORD_STRIDE,
     G28_HOME,
@@ -26,36 +26,11 @@ from ..parameters import (
 from ..state import AXES, LINEAR
 
 if TYPE_CHECKING:
-    from ..interpreter import Interpreter
+    from ..machine import Machine
     from ..resolve import Resolved
     from ..state import State
 
-Vec = list[float]
-
-
 # -- conversions ------------------------------------------------------------------------------------
-def to_machine(st: State, prog: Vec) -> Vec:
-    """Program coordinates -> machine coordinates (G92 offset, XY rotation, G5x origin)."""
-    p = [prog[i] + st.g92[i] for i in range(AXES)]
-    if st.rotation:
-        p[0], p[1] = rotate(p[0], p[1], st.rotation)
-    return [p[i] + st.g5x[i] for i in range(AXES)]
-
-
-def to_program(st: State, machine: Vec) -> Vec:
-    """Machine coordinates -> program coordinates."""
-    p = [machine[i] - st.g5x[i] for i in range(AXES)]
-    if st.rotation:
-        p[0], p[1] = rotate(p[0], p[1], -st.rotation)
-    return [p[i] - st.g92[i] for i in range(AXES)]
-
-
-def rotate(x: float, y: float, degrees: float) -> tuple[float, float]:
-    t = math.radians(degrees)
-    c, s = math.cos(t), math.sin(t)
-    return x * c - y * s, x * s + y * c
-
-
 def _to_user(st: State, axis: int, value: float) -> float:
     """A length in program units as stored in a parameter (inches)."""
     return value / st.units_factor if LINEAR[axis] else value
@@ -71,25 +46,25 @@ def _axis_words(r: Resolved) -> list[tuple[int, float]]:
 
 
 # -- emitting ---------------------------------------------------------------------------------------
-def emit_g5x(it: Interpreter) -> None:
+def emit_g5x(it: Machine) -> None:
     st = it.state
     it.emit(ops.SetG5xOffset(st.coord_index, *st.g5x))
 
 
-def emit_g92(it: Interpreter) -> None:
+def emit_g92(it: Machine) -> None:
     it.emit(ops.SetG92Offset(*it.state.g92))
 
 
-def emit_rotation(it: Interpreter) -> None:
+def emit_rotation(it: Machine) -> None:
     it.emit(ops.SetXYRotation(it.state.rotation))
 
 
-def _keep_machine_position(it: Interpreter) -> Vec:
+def _keep_machine_position(it: Machine) -> Vec:
     return to_machine(it.state, it.state.pos)
 
 
 # -- coordinate system selection ----------------------------------------------------------------
-def load_system(it: Interpreter, index: int) -> None:
+def load_system(it: Machine, index: int) -> None:
     """Make G54+index-1 the active origin from its parameters."""
     st = it.state
     base = G54_ORIGIN + COORD_STRIDE * (index - 1)
@@ -99,13 +74,13 @@ def load_system(it: Interpreter, index: int) -> None:
     st.rotation = numbered[base + 9]
 
 
-def _stored_g92(it: Interpreter) -> Vec:
+def _stored_g92(it: Machine) -> Vec:
     """The G92 offsets #5211-#5216 hold, in program units."""
     st = it.state
     return [_from_user(st, i, it.params.numbered[G92_OFFSET + i]) for i in range(AXES)]
 
 
-def load_g92(it: Interpreter) -> None:
+def load_g92(it: Machine) -> None:
     """The G92 offsets from their parameters when #5210 says they apply (a parameter file)."""
     st = it.state
     st.g92_applied = it.params.numbered[G92_APPLIED] != 0.0
@@ -113,7 +88,7 @@ def load_g92(it: Interpreter) -> None:
         st.g92 = _stored_g92(it)
 
 
-def select_system(it: Interpreter, code: int) -> None:
+def select_system(it: Machine, code: int) -> None:
     """G54..G59.3."""
     index = code // 10 - 53 if code < 591 else code - 584
     st = it.state
@@ -130,26 +105,13 @@ def select_system(it: Interpreter, code: int) -> None:
 
 
 # -- G10 ----------------------------------------------------------------------------------------
-def g10(it: Interpreter, r: Resolved) -> None:
-    l_word = r.w.get("l")
-    if l_word in (2.0, 20.0):
-        _g10_origin(it, r, int(l_word))
-    elif l_word in (1.0, 10.0, 11.0, 0.0):
-        raise NgcSemanticError("G10 L1/L10/L11 (tool table) is not supported yet")
-    else:
-        raise NgcSemanticError("Line with G10 does not have L0, L1, L10, L11, L2, or L20")
-
-
-def _g10_origin(it: Interpreter, r: Resolved, l_word: int) -> None:
-    """G10 L2 P: set an origin; G10 L20 P: set it so the current point has the given coordinates."""
+def g10(it: Machine, r: Resolved) -> None:
+    """G10 L2 P: set an origin; G10 L20 P: set it so the current point has the given coordinates.
+    (L and P were checked before the line ran.)"""
     st = it.state
     w = r.w
-    p = w.get("p")
-    if p is None or p < 0 or p >= 10:
-        raise NgcSemanticError(f"P value out of range (0-9) with G10 L{l_word}")
-    if 0.0001 < p - int(p) < 0.5:
-        # rs274 takes P2.5 or P3.99 as system 2 or 3 but refuses P2.4.
-        raise NgcSemanticError("P value not an integer with G10")
+    l_word = int(w["l"])
+    p = w["p"]
     if "i" in w or "j" in w:
         raise NgcSemanticError(f"I J words not allowed with G10 L{l_word}")
     if l_word == 20 and "r" in w:
@@ -174,7 +136,7 @@ def _g10_origin(it: Interpreter, r: Resolved, l_word: int) -> None:
     emit_rotation(it)
 
 
-def _l20_origin(it: Interpreter, values: dict[int, float], index: int) -> dict[int, float]:
+def _l20_origin(it: Machine, values: dict[int, float], index: int) -> dict[int, float]:
     """Origins that make the current machine position read ``values`` in system ``index``.
 
     Axes not given keep their current coordinate; with a rotation, giving X or Y moves the
@@ -199,14 +161,14 @@ def _l20_origin(it: Interpreter, values: dict[int, float], index: int) -> dict[i
 
 
 # -- G92 / G52 ----------------------------------------------------------------------------------
-def _store_g92(it: Interpreter) -> None:
+def _store_g92(it: Machine) -> None:
     st = it.state
     numbered = it.params.numbered
     for i in range(AXES):
         numbered[G92_OFFSET + i] = _to_user(st, i, st.g92[i])
 
 
-def g92(it: Interpreter, r: Resolved) -> None:
+def g92(it: Machine, r: Resolved) -> None:
     """G92: offsets so the current point has the given coordinates."""
     st = it.state
     for i, v in _offset_words(r):
@@ -215,7 +177,7 @@ def g92(it: Interpreter, r: Resolved) -> None:
     _offset_changed(it)
 
 
-def g52(it: Interpreter, r: Resolved) -> None:
+def g52(it: Machine, r: Resolved) -> None:
     """G52: local offset given directly (shares G92's offset)."""
     st = it.state
     for i, v in _offset_words(r):
@@ -231,19 +193,19 @@ def _offset_words(r: Resolved) -> list[tuple[int, float]]:
     return words
 
 
-def _offset_changed(it: Interpreter) -> None:
+def _offset_changed(it: Machine) -> None:
     """G52 / G92 set the offset: flag it, store it (#5210-#5216) and tell the canon."""
     _applied(it, True)
     _store_g92(it)
     emit_g92(it)
 
 
-def _applied(it: Interpreter, on: bool) -> None:
+def _applied(it: Machine, on: bool) -> None:
     it.state.g92_applied = on
     it.params.numbered[G92_APPLIED] = 1.0 if on else 0.0
 
 
-def g92_reset(it: Interpreter, code: int) -> None:
+def g92_reset(it: Machine, code: int) -> None:
     """G92.1 clear offsets and parameters, G92.2 clear offsets, G92.3 restore from parameters."""
     st = it.state
     numbered = it.params.numbered
@@ -263,7 +225,7 @@ def g92_reset(it: Interpreter, code: int) -> None:
 
 
 # -- G28 / G30 ----------------------------------------------------------------------------------
-def home_store(it: Interpreter, code: int) -> None:
+def home_store(it: Machine, code: int) -> None:
     """G28.1 / G30.1: store the current machine position."""
     st = it.state
     base = G28_HOME if code == 281 else G30_HOME
@@ -272,7 +234,7 @@ def home_store(it: Interpreter, code: int) -> None:
         it.params.numbered[base + i] = _to_user(st, i, machine[i])
 
 
-def home_targets(it: Interpreter, code: int, r: Resolved) -> tuple[Vec, Vec]:
+def home_targets(it: Machine, code: int, r: Resolved) -> tuple[Vec, Vec]:
     """G28 / G30: the intermediate point and the end point, in program coordinates.
 
     rs274 first moves to the point the axis words give (the current point without them), then

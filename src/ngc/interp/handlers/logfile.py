@@ -6,7 +6,7 @@ rs274 hands the LOG comments to the machine as canonical calls (``LOGOPEN("name"
 ``LOGAPPEND("name")``, ``LOG("text")``, ``LOGCLOSE()``) and PROBEOPEN / PROBECLOSE as ordinary
 ``COMMENT`` calls; it writes no file itself.  ngc emits the same calls and also writes the files,
 kept on the interpreter (``log``, ``probe_log``) until closed by the program or by
-``Interpreter.close()``:
+``Machine.close()``:
 
 * LOGOPEN truncates, LOGAPPEND appends; opening a log while one is open closes the old one.
 * Each LOG writes its text (parameters substituted like DEBUG) and a newline; without an open log
@@ -32,7 +32,7 @@ from ...canon import ops
 from ...errors import NgcRuntimeError
 
 if TYPE_CHECKING:
-    from ..interpreter import Interpreter
+    from ..machine import Machine
 
 # (PROBEOPEN name) / (PROBECLOSE): the keyword, then white space and the name (or the end).
 _PROBE = re.compile(r"probe(open|close)(?:[ \t]+|\Z)", re.IGNORECASE)
@@ -40,7 +40,7 @@ _PROBE = re.compile(r"probe(open|close)(?:[ \t]+|\Z)", re.IGNORECASE)
 PROBE_LINE = " ".join(["%f"] * 9) + "\n"
 
 
-def log_open(it: Interpreter, name: str, append: bool) -> None:
+def log_open(it: Machine, name: str, append: bool) -> None:
     """``(LOGOPEN,name)`` truncates the file, ``(LOGAPPEND,name)`` appends to it."""
     handle = _open("LOGAPPEND" if append else "LOGOPEN", name, "a" if append else "w")
     if it.log is not None:
@@ -49,14 +49,14 @@ def log_open(it: Interpreter, name: str, append: bool) -> None:
     it.emit(ops.LogAppend(name) if append else ops.LogOpen(name))
 
 
-def log(it: Interpreter, text: str) -> None:
+def log(it: Machine, text: str) -> None:
     """``(LOG,text)``: the text (already substituted) and a newline, if a log is open."""
     it.emit(ops.Log(text))
     if it.log is not None:
         _write(it.log, "LOG", text + "\n")
 
 
-def log_close(it: Interpreter) -> None:
+def log_close(it: Machine) -> None:
     """``(LOGCLOSE)``: close the log, if one is open."""
     it.emit(ops.LogClose())
     if it.log is not None:
@@ -64,7 +64,7 @@ def log_close(it: Interpreter) -> None:
         it.log = None
 
 
-def probe_comment(it: Interpreter, text: str) -> None:
+def probe_comment(it: Machine, text: str) -> None:
     """Open or close the probe log if the comment ``text`` is PROBEOPEN / PROBECLOSE."""
     m = _PROBE.match(text)
     if m is None:
@@ -79,13 +79,13 @@ def probe_comment(it: Interpreter, text: str) -> None:
     it.probe_log = handle
 
 
-def write_probe(it: Interpreter, coordinates: Sequence[float]) -> None:
+def write_probe(it: Machine, coordinates: Sequence[float]) -> None:
     """Log a successful straight probe: X Y Z A B C U V W, if a probe log is open."""
     if it.probe_log is not None:
         _write(it.probe_log, "PROBEOPEN", PROBE_LINE % tuple(coordinates))
 
 
-def _close_probe_log(it: Interpreter) -> None:
+def _close_probe_log(it: Machine) -> None:
     if it.probe_log is not None:
         it.probe_log.close()
         it.probe_log = None

@@ -10,9 +10,10 @@ from ...errors import NgcSemanticError
 from ..state import AXES, LINEAR, MM_PER_INCH
 
 if TYPE_CHECKING:
-    from ..interpreter import Interpreter
+    from ..machine import Machine
     from ..resolve import Resolved
 
+MOTION_NONE = ops.Comment("interpreter: motion mode set to none")
 _FEED_MODE_COMMENTS = {
     930: "interpreter: feed mode set to inverse time",
     940: "interpreter: feed mode set to units per minute",
@@ -28,7 +29,7 @@ PLANE_NAMES = {
 }
 
 
-def feed_mode(it: Interpreter, code: int) -> None:
+def feed_mode(it: Machine, code: int) -> None:
     """G93 / G94 / G95 (G93 sets no rate: each inverse-time move does)."""
     it.emit(ops.Comment(_FEED_MODE_COMMENTS[code]))
     it.state.feed_mode = code
@@ -38,7 +39,7 @@ def feed_mode(it: Interpreter, code: int) -> None:
         it.emit(ops.SetFeedRate(0.0))
 
 
-def feed_rate(it: Interpreter, f: float) -> None:
+def feed_rate(it: Machine, f: float) -> None:
     """F: the rate is given to the machine now, except in inverse time (per move)."""
     if f < 0.0:
         raise NgcSemanticError("Negative f word used")
@@ -47,14 +48,14 @@ def feed_rate(it: Interpreter, f: float) -> None:
         it.emit(ops.SetFeedRate(f))
 
 
-def spindle_speed(it: Interpreter, s: float) -> None:
+def spindle_speed(it: Machine, s: float) -> None:
     if s < 0.0:
         raise NgcSemanticError("Negative spindle speed used")
     it.state.speed = s
     it.emit(ops.SetSpindleSpeed(0, s))
 
 
-def spindle(it: Interpreter, code: int) -> None:
+def spindle(it: Machine, code: int) -> None:
     """M3 / M4 / M5."""
     if code == 3:
         it.state.spindle = 1
@@ -67,7 +68,7 @@ def spindle(it: Interpreter, code: int) -> None:
         it.emit(ops.StopSpindleTurning(0))
 
 
-def coolant(it: Interpreter, code: int) -> None:
+def coolant(it: Machine, code: int) -> None:
     """M7 mist, M8 flood, M9 both off."""
     st = it.state
     if code == 7:
@@ -82,7 +83,7 @@ def coolant(it: Interpreter, code: int) -> None:
         it.emit(ops.FloodOff())
 
 
-def overrides(it: Interpreter, code: int, p: float | None) -> None:
+def overrides(it: Machine, code: int, p: float | None) -> None:
     """M48 / M49 both overrides; M50 feed, M51 speed, M52 adaptive feed, M53 feed hold (P0 off)."""
     st = it.state
     on = p is None or p != 0.0
@@ -108,7 +109,7 @@ def overrides(it: Interpreter, code: int, p: float | None) -> None:
         it.emit(ops.EnableFeedHold() if on else ops.DisableFeedHold())
 
 
-def dwell(it: Interpreter, r: Resolved) -> None:
+def dwell(it: Machine, r: Resolved) -> None:
     """G4 P seconds."""
     p = r.w.get("p")
     if p is None or p < 0.0:
@@ -116,12 +117,12 @@ def dwell(it: Interpreter, r: Resolved) -> None:
     it.emit(ops.Dwell(p))
 
 
-def plane(it: Interpreter, code: int) -> None:
+def plane(it: Machine, code: int) -> None:
     it.state.plane = code
     it.emit(ops.SelectPlane(PLANE_NAMES[code]))
 
 
-def units(it: Interpreter, code: int) -> None:
+def units(it: Machine, code: int) -> None:
     """G20 / G21: position and offsets are converted; stored parameters are not (inches)."""
     st = it.state
     metric = code == 210
@@ -135,7 +136,7 @@ def units(it: Interpreter, code: int) -> None:
     it.emit(ops.UseLengthUnits("CANON_UNITS_MM" if metric else "CANON_UNITS_INCHES"))
 
 
-def control_mode(it: Interpreter, code: int, r: Resolved) -> None:
+def control_mode(it: Machine, code: int, r: Resolved) -> None:
     """G61 exact path, G61.1 exact stop, G64 [P tolerance [Q naive-cam tolerance]]."""
     st = it.state
     st.control_mode = code
@@ -152,20 +153,40 @@ def control_mode(it: Interpreter, code: int, r: Resolved) -> None:
         it.emit(ops.SetNaivecamTolerance(q))
 
 
-def distance_mode(it: Interpreter, code: int) -> None:
+def distance_mode(it: Machine, code: int) -> None:
     """G90 / G91."""
     _announce_distance(it, "distance", it.state.absolute, code == 900)
     it.state.absolute = code == 900
 
 
-def arc_distance_mode(it: Interpreter, code: int) -> None:
+def arc_distance_mode(it: Machine, code: int) -> None:
     """G90.1 / G91.1: arc centers absolute or relative to the start point."""
     _announce_distance(it, "IJK distance", it.state.arc_absolute, code == 901)
     it.state.arc_absolute = code == 901
 
 
-def _announce_distance(it: Interpreter, what: str, was_absolute: bool, absolute: bool) -> None:
+def _announce_distance(it: Machine, what: str, was_absolute: bool, absolute: bool) -> None:
     """rs274 comments on a change of a distance mode (not on a repeat)."""
     if absolute != was_absolute:
         word = "absolute" if absolute else "incremental"
         it.emit(ops.Comment(f"interpreter: {what} mode changed to {word}"))
+
+
+def cutter_comp_off(it: Machine) -> None:
+    """G40 (compensation is never on yet: the tools issue brings G41/G42)."""
+    it.state.ccomp = 400
+    it.emit(ops.Comment("interpreter: cutter radius compensation off"))
+
+
+def tool_length_off(it: Machine) -> None:
+    """G49: no tool length offset."""
+    it.state.tool_offset = False
+    it.emit(ops.UseToolLengthOffset(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))
+
+
+def retract_mode(it: Machine, code: int) -> None:
+    """G98 / G99: where canned cycles retract to (rs274 comments on each)."""
+    it.state.retract_r = code == 990
+    it.emit(ops.Comment(
+        "interpreter: retract mode set to " + ("r_plane" if code == 990 else "old_z")
+    ))

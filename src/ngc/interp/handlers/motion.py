@@ -13,10 +13,10 @@ from typing import TYPE_CHECKING
 
 from ...canon import ops
 from ...errors import NgcSemanticError
-from . import coordinates
+from .. import frames
 
 if TYPE_CHECKING:
-    from ..interpreter import Interpreter
+    from ..machine import Machine
 
 CENTER_ARC_TOLERANCE_INCH = 2 * 0.001 * math.sqrt(2.0)
 CENTER_ARC_TOLERANCE_MM = 2 * 0.01 * math.sqrt(2.0)
@@ -32,14 +32,14 @@ PLANES: dict[int, tuple[int, int, int, str, str, str, str]] = {
 }
 
 
-def end_point(it: Interpreter, w: dict[str, float], machine: bool) -> list[float]:
+def end_point(it: Machine, w: dict[str, float], machine: bool) -> list[float]:
     """The block's target in program coordinates (G53: axis words are machine coordinates)."""
     st = it.state
     pos = st.pos
     if machine:
-        current = coordinates.to_machine(st, pos)
+        current = frames.to_machine(st, pos)
         target = [w.get(a, current[i]) for i, a in enumerate("xyzabc")]
-        return coordinates.to_program(st, target)
+        return frames.to_program(st, target)
     if "@" in w or "^" in w:
         return _polar_end(pos, w, st.absolute)
     if st.absolute:
@@ -86,12 +86,12 @@ def relative_end(pos: list[float], w: dict[str, float]) -> list[float]:
 _new = tuple.__new__
 
 
-def traverse(it: Interpreter, end: list[float]) -> None:
+def traverse(it: Machine, end: list[float]) -> None:
     it.emit(ops.StraightTraverse(*end))
     it.state.pos = end
 
 
-def feed(it: Interpreter, w: dict[str, float], end: list[float]) -> None:
+def feed(it: Machine, w: dict[str, float], end: list[float]) -> None:
     """G1."""
     st = it.state
     if st.feed_mode != 940 or st.feed == 0.0:
@@ -102,7 +102,7 @@ def feed(it: Interpreter, w: dict[str, float], end: list[float]) -> None:
     st.pos = end
 
 
-def _check_feed(it: Interpreter, w: dict[str, float], name: str) -> None:
+def _check_feed(it: Machine, w: dict[str, float], name: str) -> None:
     st = it.state
     if st.feed_mode == 930:
         if "f" not in w:
@@ -129,7 +129,7 @@ def _inverse_rate(f: float, length: float) -> float:
 
 
 # -- arcs ---------------------------------------------------------------------------------------
-def arc(it: Interpreter, w: dict[str, float], end: list[float], code: int) -> None:
+def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
     """G2 (clockwise) / G3 (counterclockwise) in the active plane."""
     st = it.state
     plane = PLANES.get(st.plane)
@@ -174,7 +174,7 @@ def _turns(p: float | None) -> int:
     return int(p)
 
 
-def _check_arc_feed(it: Interpreter, w: dict[str, float]) -> None:
+def _check_arc_feed(it: Machine, w: dict[str, float]) -> None:
     st = it.state
     if st.feed_mode == 930:
         if "f" not in w:
@@ -186,7 +186,7 @@ def _check_arc_feed(it: Interpreter, w: dict[str, float]) -> None:
 
 
 def _ijk_center(
-    it: Interpreter, w: dict[str, float], letters: str,
+    it: Machine, w: dict[str, float], letters: str,
     s1: float, s2: float, e1: float, e2: float, labels: str,
 ) -> tuple[float, float]:
     o1 = w.get(letters[0], 0.0)
@@ -230,7 +230,7 @@ def _arc_where(
 
 
 def _radius_center(
-    it: Interpreter, code: int, radius: float, s1: float, s2: float, e1: float, e2: float
+    it: Machine, code: int, radius: float, s1: float, s2: float, e1: float, e2: float
 ) -> tuple[float, float]:
     if s1 == e1 and s2 == e2:
         raise NgcSemanticError("Current point same as end point of arc")

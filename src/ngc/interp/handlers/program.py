@@ -11,11 +11,12 @@ from typing import TYPE_CHECKING
 
 from ...canon import ops
 from ...errors import NgcProgramError
+from .. import frames
 from ..parameters import DEBUG_ENABLE
 from . import coordinates, logfile
 
 if TYPE_CHECKING:
-    from ..interpreter import Interpreter
+    from ..machine import Machine
 
 # An active comment: white space (C's isspace), the keyword (any case), a comma and the text;
 # or LOGCLOSE alone.  Anything else (a space before the comma, text after LOGCLOSE) is a COMMENT.
@@ -32,54 +33,56 @@ _LONG_MAX = 2**63 - 1
 _INT_WRAP = 2**32
 
 
-def comment(it: Interpreter, text: str) -> None:
+def comment(it: Machine, text: str) -> None:
     """Convert the (last) comment of a block."""
     body = text[1:-1]
     m = _COMMAND.match(body)
     if m is None:
+        if not body:
+            return  # "()" is no comment; "( )" is an empty one
         body = body.lstrip(" \t")
         if body:
             logfile.probe_comment(it, body)
-            it.emit(ops.Comment(body))
+        it.emit(ops.Comment(body))
         return
     kind = (m.group(1) or m.group(2)).lower()
     _ACTIVE[kind](it, body[m.end() :])
 
 
-def _msg(it: Interpreter, rest: str) -> None:
+def _msg(it: Machine, rest: str) -> None:
     it.emit(ops.Message(rest))
 
 
-def _debug(it: Interpreter, rest: str) -> None:
+def _debug(it: Machine, rest: str) -> None:
     if it.params.numbered[DEBUG_ENABLE] != 0.0:
         it.emit(ops.Message(substitute(it, rest)))
 
 
-def _print(it: Interpreter, rest: str) -> None:
+def _print(it: Machine, rest: str) -> None:
     it.sink.print_text(substitute(it, rest))
 
 
-def _abort(it: Interpreter, rest: str) -> None:
+def _abort(it: Machine, rest: str) -> None:
     raise NgcProgramError(substitute(it, rest))
 
 
-def _log(it: Interpreter, rest: str) -> None:
+def _log(it: Machine, rest: str) -> None:
     logfile.log(it, substitute(it, rest))
 
 
-def _log_open(it: Interpreter, rest: str) -> None:
+def _log_open(it: Machine, rest: str) -> None:
     logfile.log_open(it, rest, append=False)
 
 
-def _log_append(it: Interpreter, rest: str) -> None:
+def _log_append(it: Machine, rest: str) -> None:
     logfile.log_open(it, rest, append=True)
 
 
-def _log_close(it: Interpreter, rest: str) -> None:
+def _log_close(it: Machine, rest: str) -> None:
     logfile.log_close(it)
 
 
-_ACTIVE: MappingProxyType[str, Callable[[Interpreter, str], None]] = MappingProxyType({
+_ACTIVE: MappingProxyType[str, Callable[[Machine, str], None]] = MappingProxyType({
     "msg": _msg,
     "debug": _debug,
     "print": _print,
@@ -91,7 +94,7 @@ _ACTIVE: MappingProxyType[str, Callable[[Interpreter, str], None]] = MappingProx
 })
 
 
-def substitute(it: Interpreter, text: str) -> str:
+def substitute(it: Machine, text: str) -> str:
     """Replace parameters by their values; ``%d`` / ``%f`` / ``%.Nf`` set the format of the rest.
 
     A parameter that does not exist (an undefined name, a number out of range) reads ``######``.
@@ -113,7 +116,7 @@ def substitute(it: Interpreter, text: str) -> str:
     return "".join(out)
 
 
-def _parameter(it: Interpreter, token: str) -> float | None:
+def _parameter(it: Machine, token: str) -> float | None:
     """The value a ``#...`` in a comment stands for; None ("######") if there is no such parameter."""
     params = it.params
     if token[1] == "<":
@@ -127,7 +130,7 @@ def _parameter(it: Interpreter, token: str) -> float | None:
     return params.num(index)
 
 
-def stop(it: Interpreter, code: int) -> None:
+def stop(it: Machine, code: int) -> None:
     """M0 / M1 / M60 pause; M2 / M30 end the program (LinuxCNC resets its modes)."""
     if code == 0:
         it.emit(ops.ProgramStop())
@@ -140,13 +143,13 @@ def stop(it: Interpreter, code: int) -> None:
         program_end(it, code)
 
 
-def program_end(it: Interpreter, code: int) -> None:
+def program_end(it: Machine, code: int) -> None:
     """M2 / M30: G54 origin, XY plane, G90, G94, feed 0, spindle and coolant off, G1."""
     st = it.state
-    machine = coordinates.to_machine(st, st.pos)
+    machine = frames.to_machine(st, st.pos)
     coordinates.load_system(it, 1)
     it.params.numbered[5220] = 1.0
-    st.pos = coordinates.to_program(st, machine)
+    st.pos = frames.to_program(st, machine)
     coordinates.emit_g5x(it)
     coordinates.emit_rotation(it)
     if st.plane != 170:

@@ -1,0 +1,157 @@
+"""Dispatch: a checked block's codes and words, run in the order of execution, through the table.
+
+Each row of the code table (:mod:`ngc.language.codes`) names a handler; :data:`HANDLERS` maps the
+names to functions of one shape, ``handler(machine, words, code)``.  :class:`Dispatcher` binds a
+table to the handlers once; :meth:`Dispatcher.convert` collects the steps a block needs (its codes,
+the F/S words and comment, and the modal motion its axis words imply), sorts them by step and runs
+them (overview.adoc, "G-code Order of Execution").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from operator import itemgetter
+from types import MappingProxyType
+
+from ..errors import NgcSemanticError
+from ..language import codes
+from ..language.codes import CodeTable
+from ..language.words import Words
+from .handlers import coordinates, modes, motion, program
+from .machine import Machine
+
+Handler = Callable[[Machine, Words, int], None]
+
+
+def _comment(m: Machine, r: Words, code: int) -> None:
+    program.comment(m, r.comment or "")
+
+
+def _feed_rate(m: Machine, r: Words, code: int) -> None:
+    modes.feed_rate(m, r.w["f"])
+
+
+def _spindle_speed(m: Machine, r: Words, code: int) -> None:
+    modes.spindle_speed(m, r.w["s"])
+
+
+def _traverse(m: Machine, r: Words, code: int) -> None:
+    m.state.motion = code
+    motion.traverse(m, motion.end_point(m, r.w, r.g.get(codes.G_NON_MODAL) == 530))
+
+
+def _feed(m: Machine, r: Words, code: int) -> None:
+    m.state.motion = code
+    motion.feed(m, r.w, motion.end_point(m, r.w, r.g.get(codes.G_NON_MODAL) == 530))
+
+
+def _arc(m: Machine, r: Words, code: int) -> None:
+    m.state.motion = code
+    motion.arc(m, r.w, motion.end_point(m, r.w, False), code)
+
+
+def _cancel_motion(m: Machine, r: Words, code: int) -> None:
+    m.state.motion = code
+    m.emit(modes.MOTION_NONE)
+
+
+def _home(m: Machine, r: Words, code: int) -> None:
+    middle, home = coordinates.home_targets(m, code, r)
+    motion.traverse(m, middle)
+    motion.traverse(m, home)
+
+
+def _subprogram(m: Machine, r: Words, code: int) -> None:
+    raise AssertionError("M98/M99 are run by the control flow")
+
+
+HANDLERS: Mapping[str, Handler] = MappingProxyType({
+    "comment": _comment,
+    "feed_rate": _feed_rate,
+    "spindle_speed": _spindle_speed,
+    "feed_mode": lambda m, r, code: modes.feed_mode(m, code),
+    "spindle": lambda m, r, code: modes.spindle(m, code),
+    "coolant": lambda m, r, code: modes.coolant(m, code),
+    "overrides": lambda m, r, code: modes.overrides(m, code, r.w.get("p")),
+    "subprogram": _subprogram,
+    "dwell": lambda m, r, code: modes.dwell(m, r),
+    "plane": lambda m, r, code: modes.plane(m, code),
+    "units": lambda m, r, code: modes.units(m, code),
+    "cutter_comp_off": lambda m, r, code: modes.cutter_comp_off(m),
+    "tool_length_off": lambda m, r, code: modes.tool_length_off(m),
+    "select_system": lambda m, r, code: coordinates.select_system(m, code),
+    "control_mode": lambda m, r, code: modes.control_mode(m, code, r),
+    "distance_mode": lambda m, r, code: modes.distance_mode(m, code),
+    "arc_distance_mode": lambda m, r, code: modes.arc_distance_mode(m, code),
+    "retract_mode": lambda m, r, code: modes.retract_mode(m, code),
+    "g10": lambda m, r, code: coordinates.g10(m, r),
+    "g92": lambda m, r, code: coordinates.g92(m, r),
+    "g52": lambda m, r, code: coordinates.g52(m, r),
+    "g92_reset": lambda m, r, code: coordinates.g92_reset(m, code),
+    "home_store": lambda m, r, code: coordinates.home_store(m, code),
+    "home": _home,
+    "traverse": _traverse,
+    "feed": _feed,
+    "arc": _arc,
+    "cancel_motion": _cancel_motion,
+    "stop": lambda m, r, code: program.stop(m, code),
+})
+
+Step = tuple[int, Handler | None]
+_by_step = itemgetter(0)
+
+
+class Dispatcher:
+    """A code table bound to its handlers: ``g``/``m`` code -> (step, handler or None)."""
+
+    __slots__ = ("g", "m", "table", "words")
+
+    def __init__(self, table: CodeTable, handlers: Mapping[str, Handler] = HANDLERS) -> None:
+        self.table = table
+        self.g = {code: (row.step, _bind(row.handler, handlers)) for code, row in table.g.items()}
+        self.m = {code: (row.step, _bind(row.handler, handlers)) for code, row in table.m.items()}
+        self.words = {
+            letter: (step, _bind(name, handlers)) for letter, (step, name) in codes.WORD_STEPS.items()
+            if name is not None
+        }
+
+    def convert(self, m: Machine, r: Words) -> None:
+        """Run a checked block's steps in the order of execution."""
+        calls: list[tuple[int, Handler, int]] = []
+        if r.comment is not None:
+            calls.append((codes.STEP_COMMENT, _comment, 0))
+        g = r.g
+        for code in g.values():
+            step, fn = self.g[code]
+            if fn is not None:
+                calls.append((step, fn, code))
+        for code in r.m.values():
+            step, fn = self.m[code]
+            if fn is not None:
+                calls.append((step, fn, code))
+        words = self.words
+        for letter in r.w:
+            if letter in words:
+                step, fn = words[letter]
+                if fn is not None:
+                    calls.append((step, fn, 0))
+        if codes.G_MOTION not in g and r.moves:
+            modal = m.state.motion
+            if modal != codes.G_CANCEL_MOTION and g.get(codes.G_NON_MODAL) not in self.table.axis_users:
+                step, fn = self.g[modal]
+                if fn is not None:
+                    calls.append((step, fn, modal))
+        calls.sort(key=_by_step)
+        for _, fn, code in calls:
+            fn(m, r, code)
+
+
+def _bind(name: str | None, handlers: Mapping[str, Handler]) -> Handler | None:
+    """The handler a row names; None for a code that is not run by itself (G53 modifies motion)
+    or not supported (the check refuses it before dispatch)."""
+    if not name:
+        return None
+    try:
+        return handlers[name]
+    except KeyError:
+        raise NgcSemanticError(f"No handler named {name!r} for a code of the table") from None

@@ -1,0 +1,252 @@
+"""The one fast path: shortcuts for the commonest lines, all in this module.
+
+A *plain line* is defined here, once, from the code table: no code but a motion code whose handler
+is one of :data:`PLAIN_HANDLERS` (or no code at all), and only the words that need no other code —
+X Y Z A B C F S, plus the motion code's own words (I J K R P for arcs).  Most CAM output is plain
+lines.  :class:`FastPath` runs them with the same checks and in the same order as the general path
+(:class:`~ngc.interp.dispatch.Dispatcher`), without building a block:
+
+* :meth:`FastPath.line` reads a raw line with :func:`~ngc.language.parser.split_plain` (and keeps
+  the last plain lines read, as CAM output repeats its retracts) or runs a comment-only line;
+* :meth:`FastPath.convert` is the plain-line runner (the hot loop of a plain program);
+* :meth:`FastPath.compile` and :meth:`FastPath.specialise` give the lines of a loop body a runner
+  built once (parameter settings only, or a plain motion with computed values).
+
+An interpreter built with ``fast=False`` has no ``FastPath``: every line takes the general path.
+tests/test_golden.py runs every golden case both ways and requires the same transcript.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import NamedTuple
+
+from ..canon import ops
+from ..errors import NgcSemanticError
+from ..language.codes import FREE_LETTERS, G_CANCEL_MOTION, G_MOTION, CodeTable
+from ..language.expressions import Value
+from ..language.parser import PARAM, WORD, Block, n_label, split_plain, words_of
+from ..language.words import Words
+from .handlers import modes, motion, program
+from .machine import Machine
+from .parameters import check_number_writable, check_writable
+
+# The motion handlers a plain line may run.
+PLAIN_HANDLERS = frozenset({"traverse", "feed", "arc"})
+PLAIN_CACHE_SIZE = 1024
+_AXES = frozenset("xyzabc")
+_new = tuple.__new__
+
+# A plain line read once: (words, motion code or None, N column, source).
+Plain = tuple[dict[str, float], "int | None", str, str]
+
+
+class Compiled(NamedTuple):
+    """A block with a runner of its own (see :meth:`FastPath.specialise`)."""
+
+    block: Block
+    run: Callable[[], None]
+
+
+class FastPath:
+    """The plain-line shortcuts for one machine and code table."""
+
+    __slots__ = ("_arcs", "_lines", "_motion", "execute", "m", "table")
+
+    def __init__(self, m: Machine, table: CodeTable, execute: Callable[[Block], None]) -> None:
+        """``execute`` runs a block on the general path (a line read here that is not plain)."""
+        self.m = m
+        self.table = table
+        self.execute = execute
+        # G word value -> motion code, for the motion codes a plain line may hold.
+        self._motion = {
+            value: code for value, code in table.motion_by_value.items()
+            if table.g[code].handler in PLAIN_HANDLERS
+        }
+        # Motion code -> the letters its plain lines may carry beyond the free ones.
+        self._arcs = {code: table.plain_arcs[code] for code in self._motion.values()
+                      if code in table.plain_arcs}
+        self._lines: dict[str, tuple[dict[str, float], int | None, str]] = {}
+
+    # -- what a plain line is -----------------------------------------------------------------
+    def entry(
+        self, found: tuple[dict[str, float], float | None, str | None],
+    ) -> tuple[dict[str, float], int | None, str] | None:
+        """What :func:`split_plain` read, as (words, motion code, N column) if it is a plain line."""
+        w, g, digits = found
+        code = None if g is None else self._motion.get(g)
+        if g is not None and code is None:
+            return None
+        if FREE_LETTERS.issuperset(w) or (code in self._arcs and self._arcs[code].issuperset(w)):
+            return w, code, "N..... " if digits is None else n_label(digits)
+        return None
+
+    def is_plain(self, r: Words) -> bool:
+        """The same definition for a block's resolved words."""
+        if r.m or r.assigns or r.comment is not None:
+            return False
+        g = r.g
+        if not g:
+            return not r.others
+        code = g.get(G_MOTION)
+        if len(g) != 1 or code is None or self.table.g[code].handler not in PLAIN_HANDLERS:
+            return False
+        return not r.others or (code in self._arcs and self._arcs[code].issuperset(r.w))
+
+    # -- running ------------------------------------------------------------------------------
+    def line(self, raw: str, number: int) -> bool:
+        """Run ``raw`` if split_plain can read it or it is one comment; else False."""
+        m = self.m
+        hit = self._lines.get(raw)
+        if hit is not None:
+            w, code, m.label = hit
+            m.line = m.state.line = number
+            self.convert(w, code)
+            return True
+        found = split_plain(raw.replace(" ", "").lower())
+        if found is None:
+            return self.comment_line(raw, number)
+        hit = self.entry(found)
+        if hit is not None:
+            w, code, m.label = hit
+            m.line = m.state.line = number
+            self.convert(w, code)
+            cache = self._lines
+            if len(cache) >= PLAIN_CACHE_SIZE:
+                cache.clear()
+            cache[raw] = hit
+            return True
+        w, g, digits = found
+        block = Block(number, raw.rstrip())
+        block.resolved = words_of(w, g, self.table)
+        if digits is not None:
+            block.n_number = int(digits)
+            block.label = n_label(digits)
+        self.execute(block)
+        return True
+
+    def comment_line(self, raw: str, number: int) -> bool:
+        """Run ``raw`` if it holds nothing but one ``( ... )`` comment; else False."""
+        text = raw.strip(" \t\r")
+        if not (text[:1] == "(" and text[-1:] == ")" and text.count("(") == 1):
+            return False
+        if text.count(")") != 1 or not text.isascii():
+            return False
+        m = self.m
+        m.label = "N..... "
+        m.line = m.state.line = number
+        program.comment(m, text)
+        return True
+
+    def convert(self, w: dict[str, float], code: int | None) -> None:
+        """A plain line: F, S, then the motion (explicit or modal), as the general path runs it."""
+        m = self.m
+        st = m.state
+        if "f" in w:
+            f = w["f"]
+            if f >= 0.0 and st.feed_mode == 940:
+                st.feed = f
+                m.sink.emit(_new(ops.SetFeedRate, (f,)), m.label, m.line)
+            else:
+                modes.feed_rate(m, f)
+        if "s" in w:
+            modes.spindle_speed(m, w["s"])
+        if code is None:
+            if _AXES.isdisjoint(w):
+                return
+            code = st.motion
+            if code == G_CANCEL_MOTION:
+                raise NgcSemanticError("Cannot use axis values without a g code that uses them")
+        if code in self._arcs:
+            st.motion = code
+            motion.arc(m, w, motion.end_point(m, w, False), code)
+            return
+        st.motion = code
+        pos = st.pos
+        if st.absolute:
+            end = [w.get("x", pos[0]), w.get("y", pos[1]), w.get("z", pos[2]),
+                   w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
+        else:
+            end = motion.relative_end(pos, w)
+        if code == 0:
+            m.sink.emit(_new(ops.StraightTraverse, end), m.label, m.line)
+        elif st.feed_mode == 940 and st.feed != 0.0:
+            m.sink.emit(_new(ops.StraightFeed, end), m.label, m.line)
+        else:
+            motion.feed(m, w, end)
+            return
+        st.pos = end
+
+    # -- lines run many times -----------------------------------------------------------------
+    def compile(self, raw: str, number: int, parse: Callable[[str, int], Block]) -> Plain | Block | Compiled:
+        """A line read once for running many times: plain words, a block with a runner, or a
+        block for the general path."""
+        found = split_plain(raw.replace(" ", "").lower())
+        hit = None if found is None else self.entry(found)
+        if hit is not None:
+            return (*hit, raw.rstrip())
+        block = parse(raw, number)
+        run = self.specialise(block)
+        return block if run is None else Compiled(block, run)
+
+    def specialise(self, block: Block) -> Callable[[], None] | None:
+        """A runner for ``block`` if it holds only parameter settings, or only a G0/G1 (or no G
+        code) with axis, F and S words of computed value; else None."""
+        if block.delete or block.oword is not None or block.resolved is not None or not block.items:
+            return None
+        kinds = {kind for kind, _, _ in block.items}
+        if kinds == {PARAM}:
+            return self._settings(block)
+        if kinds == {WORD}:
+            return self._plain_motion(block)
+        return None
+
+    def _settings(self, block: Block) -> Callable[[], None] | None:
+        """``#1 = [...] #<x> = [...]``: values read left to right, then all set."""
+        targets: list[int | str] = []
+        values: list[Value] = []
+        for _, key, value in block.items:
+            if not isinstance(key, int | str):
+                return None  # a computed parameter number: the general path checks it
+            if isinstance(key, int):
+                check_number_writable(key)
+            targets.append(key)
+            values.append(value)  # type: ignore[arg-type]
+        params = self.m.params
+        pairs = list(zip(targets, values, strict=True))
+
+        def run() -> None:
+            read = []
+            for target, value in pairs:
+                if isinstance(target, str):
+                    check_writable(target)
+                    params.declare(target)
+                read.append(value if type(value) is float else value(params))  # type: ignore[operator]
+            assign = params.assign
+            for (target, _), v in zip(pairs, read, strict=True):
+                assign(target, v)
+
+        return run
+
+    def _plain_motion(self, block: Block) -> Callable[[], None] | None:
+        """``G1 X[...] Y[...]``: the plain-line runner with the values evaluated."""
+        code: int | None = None
+        words: list[tuple[str, Value]] = []
+        for _, key, value in block.items:
+            if key == "g":
+                if not isinstance(value, float) or code is not None:
+                    return None
+                code = self._motion.get(value)
+                if code is None or code in self._arcs:
+                    return None
+            elif key in FREE_LETTERS and all(key != k for k, _ in words):
+                words.append((key, value))  # type: ignore[arg-type]
+            else:
+                return None
+        params = self.m.params
+        convert = self.convert
+
+        def run() -> None:
+            convert({k: v if type(v) is float else v(params) for k, v in words}, code)  # type: ignore[operator]
+
+        return run

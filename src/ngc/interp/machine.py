@@ -1,0 +1,45 @@
+"""The narrow context a code's handler works on: the modal state, the parameters and the canon.
+
+Handlers (``interp/handlers``) see a :class:`Machine`, never the interpreter: what they may read
+and change is listed here.  The interpreter owns one and sets ``label`` and ``line`` for each block
+it runs, so every operation a handler emits carries its block's N column and source line.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, TextIO
+
+from .parameters import COORD_SYSTEM, Parameters
+from .state import State
+
+if TYPE_CHECKING:
+    from ..canon.ops import Op, Sink
+
+
+class Machine:
+    """State, parameters, the sink, and the files a program opens (logs)."""
+
+    __slots__ = ("ended", "label", "line", "log", "params", "probe_log", "sink", "state")
+
+    def __init__(self, sink: Sink, state: State | None = None) -> None:
+        self.sink = sink
+        self.state = State() if state is None else state
+        self.params = Parameters(self.state)
+        self.params.numbered[COORD_SYSTEM] = 1.0
+        self.label = "N..... "  # the running block's N column
+        self.line = 0  # the running block's source line
+        self.ended = False  # M2 / M30 ran
+        # The file of (LOGOPEN,...) / (LOGAPPEND,...), until (LOGCLOSE) or the end of the run.
+        self.log: TextIO | None = None
+        # The file of (PROBEOPEN ...), until (PROBECLOSE) or the end of the run.
+        self.probe_log: TextIO | None = None
+
+    def emit(self, op: Op) -> None:
+        self.sink.emit(op, self.label, self.line)
+
+    def close(self) -> None:
+        """Release what the program opened (the log and probe log files)."""
+        for handle in (self.log, self.probe_log):
+            if handle is not None:
+                handle.close()
+        self.log = self.probe_log = None
