@@ -95,34 +95,32 @@ class FastPath:
 
     # -- running ------------------------------------------------------------------------------
     def line(self, raw: str, number: int) -> bool:
-        """Run ``raw`` if split_plain can read it or it is one comment; else False."""
+        """Run ``raw`` if split_plain can read it or it is one comment; else False.  Errors are
+        raised without a place: the caller knows the line."""
         m = self.m
         hit = self._lines.get(raw)
-        if hit is not None:
-            w, code, m.label = hit
-            m.line = m.state.line = number
-            self.convert(w, code)
-            return True
-        found = split_plain(raw.replace(" ", "").lower())
-        if found is None:
-            return self.comment_line(raw, number)
-        hit = self.entry(found)
-        if hit is not None:
-            w, code, m.label = hit
-            m.line = m.state.line = number
-            self.convert(w, code)
-            cache = self._lines
-            if len(cache) >= PLAIN_CACHE_SIZE:
-                cache.clear()
-            cache[raw] = hit
-            return True
-        w, g, digits = found
-        block = Block(number, raw.rstrip())
-        block.resolved = words_of(w, g, self.table)
-        if digits is not None:
-            block.n_number = int(digits)
-            block.label = n_label(digits)
-        self.execute(block)
+        if hit is None:
+            found = split_plain(raw.replace(" ", "").lower())
+            if found is None:
+                return self.comment_line(raw, number)
+            hit = self.entry(found)
+            if hit is not None:
+                cache = self._lines
+                if len(cache) >= PLAIN_CACHE_SIZE:
+                    cache.clear()
+                cache[raw] = hit
+            else:
+                w, g, digits = found
+                block = Block(number, raw.rstrip())
+                block.resolved = words_of(w, g, self.table)
+                if digits is not None:
+                    block.n_number = int(digits)
+                    block.label = n_label(digits)
+                self.execute(block)
+                return True
+        w, code, m.label = hit
+        m.line = m.state.line = number
+        self.convert(w, code)
         return True
 
     def comment_line(self, raw: str, number: int) -> bool:

@@ -191,24 +191,29 @@ class Interpreter:
             if self.ended or flow.tape is not None:
                 self._finish_run()
                 return
-        fast = self.fast
+        line = self.fast.line if self.fast is not None else None
         m = self.machine
-        for number, raw in numbered:
-            raw = raw.rstrip("\n")
-            if "\x00" in raw or len(raw) > MAX_LINE:
-                raw = self._checked(raw, number, opening=False)
-            if percent and raw.strip() == "%":
-                self.finish_percent()
-                return
-            if fast is None or not self._fast_line(fast, raw, number):
-                self.execute_line(raw, number)
-            if m.ended or flow.tape is not None:
-                self._finish_run()
-                return
-        message = "File ended with no percent sign" if percent else (
-            "File ended with no percent sign or program end"
-        )
-        raise NgcProgramError(message, file=file, line=number, source=raw.rstrip())
+        try:
+            for number, raw in numbered:
+                raw = raw.rstrip("\n")
+                if "\x00" in raw or len(raw) > MAX_LINE:
+                    raw = self._checked(raw, number, opening=False)
+                if percent and raw.strip() == "%":
+                    self.finish_percent()
+                    return
+                if line is None or not line(raw, number):
+                    self.execute_line(raw, number)
+                if m.ended or flow.tape is not None:
+                    break
+            else:
+                message = "File ended with no percent sign" if percent else (
+                    "File ended with no percent sign or program end"
+                )
+                raise NgcProgramError(message, file=file, line=number, source=raw.rstrip())
+        except NgcError as err:
+            # The fast path's errors know neither their line nor their file; the others do.
+            raise err.locate(file=file, line=number, source=raw.rstrip()) from None
+        self._finish_run()
 
     def _finish_run(self) -> None:
         """The program ended, or control flow took it over: it runs the rest, to the end."""
@@ -255,15 +260,12 @@ class Interpreter:
         return raw
 
     def _execute_raw(self, raw: str, number: int) -> None:
-        fast = self.fast
-        if fast is None or not self._fast_line(fast, raw, number):
-            self.execute_line(raw, number)
-
-    def _fast_line(self, fast: FastPath, raw: str, number: int) -> bool:
         try:
-            return fast.line(raw, number)
+            if self.fast is not None and self.fast.line(raw, number):
+                return
         except NgcError as err:
             raise err.locate(file=self.file, line=number, source=raw.rstrip()) from None
+        self.execute_line(raw, number)
 
     def compile_line(self, raw: str, number: int) -> Plain | Block | Compiled:
         """A line read once for running many times (a loop or subroutine body)."""
