@@ -43,8 +43,8 @@ def feed_rate(it: Machine, f: float) -> None:
     """F: the rate is given to the machine now, except in inverse time (per move)."""
     if f < 0.0:
         raise NgcSemanticError("Negative f word used")
-    it.state.feed = f
-    if it.state.feed_mode != 930:
+    if it.state.feed_mode != 930:  # in inverse time the F word is per move (see motion.feed)
+        it.state.feed = f
         it.emit(ops.SetFeedRate(f))
 
 

@@ -97,7 +97,8 @@ def feed(it: Machine, w: dict[str, float], end: list[float]) -> None:
     if st.feed_mode != 940 or st.feed == 0.0:
         _check_feed(it, w, "g1")
         if st.feed_mode == 930:
-            it.emit(ops.SetFeedRate(_inverse_rate(st.feed, _line_length(st.pos, end))))
+            st.feed = _inverse_rate(w["f"], _line_length(st.pos, end))  # #<_feed> reads it
+            it.emit(ops.SetFeedRate(st.feed))
     it.sink.emit(_new(ops.StraightFeed, end), it.label, it.line)
     st.pos = end
 
@@ -159,7 +160,8 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
     rotation = turns if code == 30 else -turns
     if st.feed_mode == 930:
         length = _arc_length(s1, s2, e1, e2, c1, c2, rotation, end[helix] - start[helix])
-        it.emit(ops.SetFeedRate(_inverse_rate(st.feed, length)))
+        st.feed = _inverse_rate(w["f"], length)
+        it.emit(ops.SetFeedRate(st.feed))
     it.emit(ops.ArcFeed(e1, e2, c1, c2, rotation, end[helix], end[3], end[4], end[5]))
     st.pos = end
 
