@@ -18,12 +18,7 @@ CASES = Path(__file__).parent / "golden" / "cases"
 
 
 # Known differences, each with its reason; strict, so a case that starts passing is noticed.
-KNOWN: dict[str, str] = {
-    "oword-quirk-break-while-then-do": "rs274 quirk not reproduced: after a break out of a while "
-    "loop, the closing while of the next do loop falls through once",
-    "oword-quirk-repeat-leftover-count": "rs274 quirk not reproduced: a repeat left early keeps "
-    "its remaining count for the next run of that line",
-}
+KNOWN: dict[str, str] = {}
 
 
 def _cases() -> list[object]:

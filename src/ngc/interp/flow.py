@@ -160,7 +160,7 @@ class Sub:
 class Frame:
     """One scope being run: the main program or one call of a subroutine."""
 
-    __slots__ = ("active", "body", "labels", "pc", "repeats", "saved", "sub")
+    __slots__ = ("body", "labels", "pc", "repeats", "saved", "sub")
 
     def __init__(self, body: Body, pc: int, sub: Sub | None) -> None:
         self.body = body
@@ -168,8 +168,6 @@ class Frame:
         self.sub = sub
         # label -> (keyword, line) of each control construct run in this scope.
         self.labels: dict[str, tuple[str, int]] = {}
-        # Repeat loops under way: label -> runs left.
-        self.active: dict[str, int] = {}
         self.saved: list[float] = []
         # M98 L: further runs of a Fanuc-style program after this one.
         self.repeats = 0
@@ -213,6 +211,11 @@ class Flow:
         self.max_iterations = DEFAULT_MAX_ITERATIONS
         self.max_call_depth = MAX_CALL_DEPTH
         self.iterations = 0
+        # Repeat loops under way: (body, line of the repeat) -> runs left.  A repeat left early
+        # (a return inside it) keeps its count: the next run of that line counts on from there.
+        self.active: dict[tuple[int, int], int] = {}
+        # A break left a while loop: the next do loop's closing while does not loop back.
+        self.broken_while = False
         self.handlers: dict[str, Callable[[Frame, Block, OWord], None]] = {
             keyword: getattr(self, "_" + (keyword or "program"))
             for keyword in (*KEYWORDS, PROGRAM, NOTHING)
@@ -460,9 +463,10 @@ class Flow:
         bound = f.labels.get(label)
         if bound is not None and bound[0] == "do" and bound[1] != block.line:
             # The end of a do-while loop.
-            if self.condition(ow):
+            if self.condition(ow) and not self.broken_while:
                 self.again()
                 f.pc = bound[1] + 1
+            self.broken_while = False
             return
         if bound is None or bound[1] != block.line:
             self.bind(f, block, label, "while")
@@ -483,13 +487,14 @@ class Flow:
     def _repeat(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
         self.bind(f, block, label, "repeat")
-        left = f.active.get(label)
+        key = (id(f.body), block.line)
+        left = self.active.get(key)
         if left is None:
             left = round(evaluate(ow.args[0], self.interp.machine.params))  # halves to even, as rs274
         if left > 0:
-            f.active[label] = left - 1
+            self.active[key] = left - 1
         else:
-            f.active.pop(label, None)
+            self.active.pop(key, None)
             f.pc = self.jump(f, block.line, ow, label, ("endrepeat",)).line + 1
 
     def _endrepeat(self, f: Frame, block: Block, ow: OWord) -> None:
@@ -502,6 +507,8 @@ class Flow:
         keyword, _ = self.lookup(f, block, label, _LOOPS, "while/do label")
         end = ("endwhile",) if keyword == "while" else ("while",)
         f.pc = self.jump(f, block.line, ow, label, end).line + 1
+        if keyword == "while":
+            self.broken_while = True
 
     def _continue(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
