@@ -81,14 +81,16 @@ SEEK = 2  # a search for a subroutine to call
 
 
 class Mark:
-    """Where a skip stopped: the line, its o-word and its source text."""
+    """Where a skip stopped: the line, its o-word and its source text; and the labels of the
+    ``break`` lines the skip passed over (rs274 takes note of them, see ``Flow.broken_while``)."""
 
-    __slots__ = ("line", "oword", "source")
+    __slots__ = ("breaks", "line", "oword", "source")
 
-    def __init__(self, line: int, oword: OWord, source: str) -> None:
+    def __init__(self, line: int, oword: OWord, source: str, breaks: tuple[str, ...] = ()) -> None:
         self.line = line
         self.oword = oword
         self.source = source
+        self.breaks = breaks
 
 
 class Body:
@@ -160,7 +162,7 @@ class Sub:
 class Frame:
     """One scope being run: the main program or one call of a subroutine."""
 
-    __slots__ = ("body", "labels", "pc", "repeats", "saved", "sub")
+    __slots__ = ("body", "labels", "open_whiles", "pc", "repeats", "saved", "sub")
 
     def __init__(self, body: Body, pc: int, sub: Sub | None) -> None:
         self.body = body
@@ -168,6 +170,8 @@ class Frame:
         self.sub = sub
         # label -> (keyword, line) of each control construct run in this scope.
         self.labels: dict[str, tuple[str, int]] = {}
+        # The labels of the while loops under way in this scope.
+        self.open_whiles: set[str] = set()
         self.saved: list[float] = []
         # M98 L: further runs of a Fanuc-style program after this one.
         self.repeats = 0
@@ -214,8 +218,11 @@ class Flow:
         # Repeat loops under way: (body, line of the repeat) -> runs left.  A repeat left early
         # (a return inside it) keeps its count: the next run of that line counts on from there.
         self.active: dict[tuple[int, int], int] = {}
-        # A break left a while loop: the next do loop's closing while does not loop back.
+        # A break left a while loop, or a skip passed over a break of a while loop under way: the
+        # next do loop's closing while does not loop back (rs274 2.9.0~pre1 does so).
         self.broken_while = False
+        # Where the skip from an o-word (constant label) to a keyword ends, once found.
+        self.jumps: dict[tuple[Body, int, str], Mark] = {}
         self.handlers: dict[str, Callable[[Frame, Block, OWord], None]] = {
             keyword: getattr(self, "_" + (keyword or "program"))
             for keyword in (*KEYWORDS, PROGRAM, NOTHING)
@@ -341,6 +348,7 @@ class Flow:
         """Pass over the lines after ``start`` to the o-word ``label`` with one of ``kinds``."""
         it = self.interp
         body = f.body
+        breaks: list[str] = []
         params = it.machine.params
         number = start
         while True:
@@ -394,21 +402,24 @@ class Flow:
                     st.value, st.value_returned = (value[0], 1.0) if value else (0.0, 0.0)
                     return Mark(number, ow, source)
                 if ow.keyword in kinds and self.label(ow) == label:
-                    return Mark(number, ow, source)
+                    return Mark(number, ow, source, tuple(breaks))
+                if ow.keyword == "break" and mode == BRANCH:
+                    breaks.append(self.label(ow))
             except NgcError as err:
                 raise err.locate(file=body.file, line=number, source=source) from None
 
     def jump(self, f: Frame, start: int, ow: OWord, label: str, kinds: tuple[str, ...]) -> Mark:
-        """``skip`` (BRANCH) from line ``start`` (``ow``'s line), remembered on the o-word when
-        its label is constant."""
-        key = kinds[0]
-        if ow.label is not None:
-            known = ow.jumps.get(key)
-            if isinstance(known, Mark):
-                return known
-        found = self.skip(f, start, label, kinds, BRANCH)
-        if ow.label is not None:
-            ow.jumps[key] = found
+        """``skip`` (BRANCH) from line ``start`` (``ow``'s line), remembered when the label is
+        constant."""
+        key = (f.body, start, kinds[0])
+        found = self.jumps.get(key) if ow.label is not None else None
+        if found is None:
+            found = self.skip(f, start, label, kinds, BRANCH)
+            if ow.label is not None:
+                self.jumps[key] = found
+        for passed in found.breaks:
+            if passed in f.open_whiles or (passed == label and kinds[0] == "endwhile"):
+                self.broken_while = True
         return found
 
     # -- conditionals -------------------------------------------------------------------------
@@ -470,7 +481,10 @@ class Flow:
             return
         if bound is None or bound[1] != block.line:
             self.bind(f, block, label, "while")
-        if not self.condition(ow):
+        if self.condition(ow):
+            f.open_whiles.add(label)
+        else:
+            f.open_whiles.discard(label)
             f.pc = self.jump(f, block.line, ow, label, ("endwhile",)).line + 1
 
     def _endwhile(self, f: Frame, block: Block, ow: OWord) -> None:
@@ -506,9 +520,10 @@ class Flow:
         label = self.label(ow)
         keyword, _ = self.lookup(f, block, label, _LOOPS, "while/do label")
         end = ("endwhile",) if keyword == "while" else ("while",)
-        f.pc = self.jump(f, block.line, ow, label, end).line + 1
         if keyword == "while":
+            f.open_whiles.discard(label)
             self.broken_while = True
+        f.pc = self.jump(f, block.line, ow, label, end).line + 1
 
     def _continue(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)

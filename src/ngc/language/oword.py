@@ -44,15 +44,13 @@ MAX_ARGS = 30
 class OWord:
     """One parsed o-word.  ``label`` is the label text when constant, else None (see ``label_of``)."""
 
-    __slots__ = ("args", "jumps", "keyword", "label", "label_expr")
+    __slots__ = ("args", "keyword", "label", "label_expr")
 
     def __init__(self, keyword: str, label: str | None, label_expr: ex.Value | None) -> None:
         self.keyword = keyword
         self.label = label
         self.label_expr = label_expr
         self.args: list[ex.Value] = []
-        # Where a skip from this line ends, once found (constant labels only; set by the flow).
-        self.jumps: dict[str, object] = {}
 
     def label_of(self, params: ex.ParamContext) -> str:
         """The label: constant, or computed from the current parameters (``o[#1+2]``)."""
