@@ -140,8 +140,8 @@ def _signed(r: float, x: float) -> float:
 
 
 def _round(x: float) -> float:
-    # C round(): halves away from zero.
-    return _signed(float(math.floor(abs(x) + 0.5)) * (1.0 if x >= 0 else -1.0), x)
+    """Halves away from zero; a result of zero is +0 (rs274: ROUND[-0.11] is 0, not -0)."""
+    return float(math.floor(abs(x) + 0.5)) * (1.0 if x >= 0 else -1.0) + 0.0
 
 
 # rs274 computes trigonometry in x87 long double: the angle in radians is x * pi / 180 with pi and

@@ -125,8 +125,8 @@ def _line_length(a: list[float], b: list[float]) -> float:
 
 
 def _inverse_rate(f: float, length: float) -> float:
-    """G93: the move takes 1/F minutes, so the rate is length * F."""
-    return length * f if length > 0.0 else f * 0.1
+    """G93: the move takes 1/F minutes, so the rate is length * F; rs274 gives no less than 0.1."""
+    return max(length * f, 0.1)
 
 
 # -- arcs ---------------------------------------------------------------------------------------

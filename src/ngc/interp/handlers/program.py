@@ -30,6 +30,7 @@ _FORMATS = MappingProxyType({"%d": "%.0f", "%f": "%.4f"})
 _SUBSTITUTION = re.compile(r"%(?:d|f|\.[0-9]f|(?=\.))|#(?:<[^>]*>|[0-9]+)")
 # rs274 reads a parameter number in a comment as a C long (saturating) and keeps an int of it.
 _LONG_MAX = 2**63 - 1
+_SHOWN_MIN = 0.0001
 _INT_WRAP = 2**32
 
 
@@ -111,7 +112,8 @@ def substitute(it: Machine, text: str) -> str:
                 fmt = _FORMATS.get(token, token)
             continue
         value = _parameter(it, token)
-        out.append("######" if value is None else fmt % (value + 0.0))
+        # rs274 shows a value under 0.0001 in size as 0 (SIN[0.005] prints 0.000000).
+        out.append("######" if value is None else fmt % (value if abs(value) >= _SHOWN_MIN else 0.0))
     out.append(text[pos:])
     return "".join(out)
 
@@ -160,8 +162,8 @@ def program_end(it: Machine, code: int) -> None:
     it.emit(ops.SetFeedMode(0, 0))
     st.feed = 0.0
     it.emit(ops.SetFeedRate(0.0))
-    if not (st.feed_override and st.speed_override):
-        st.feed_override = st.speed_override = True
+    if not st.feed_override:  # rs274 turns the feed override back on, and says so
+        st.feed_override = True
         it.emit(ops.EnableFeedOverride())
     st.spindle = 0
     it.emit(ops.StopSpindleTurning(0))
