@@ -14,6 +14,7 @@ from ..language.words import Words
 from .state import State
 
 _G10_L = (0.0, 1.0, 2.0, 10.0, 11.0, 20.0)
+_ARCS = (20, 30)
 
 
 def check(st: State, r: Words, table: CodeTable) -> None:
@@ -22,12 +23,14 @@ def check(st: State, r: Words, table: CodeTable) -> None:
     _check_supported(r, table)
     non_modal = g.get(codes.G_NON_MODAL)
     motion = g.get(codes.G_MOTION)
-    if non_modal == codes.G_MACHINE_COORDINATES:
-        _check_g53(st, r, motion)
     if r.has_axes:
         _check_axis_users(st, motion, non_modal, table)
+    if non_modal == codes.G_MACHINE_COORDINATES:
+        _check_g53(st, r, motion)
     if r.others:
         _check_other_words(st, r, motion, non_modal, table)
+        if "p" in r.w and (motion in _ARCS or (motion is None and r.moves and st.motion in _ARCS)):
+            _check_turns(r.w["p"])
     for code in g.values():
         row = table.g[code]
         if row.requires and not any(letter in r.w for letter in row.requires):
@@ -86,6 +89,16 @@ def _check_other_words(
     for letter, message in codes.UNUSED_WORD_MESSAGES:
         if letter in w and letter not in used:
             raise NgcSemanticError(message)
+    if "$" in w:
+        raise NgcSemanticError("$ words (spindle selection) are not supported yet")
+
+
+def _check_turns(p: float) -> None:
+    """An arc's P: a whole number of turns, at least 1."""
+    if p != int(p):
+        raise NgcSemanticError("P value not an integer with M19 G2 or G3")
+    if p < 1:
+        raise NgcSemanticError("P value should be 1 or greater with G2 or G3")
 
 
 def _check_g10(r: Words) -> None:

@@ -63,8 +63,9 @@ class FastPath:
             value: code for value, code in table.motion_by_value.items()
             if table.g[code].handler in PLAIN_HANDLERS
         }
-        # Motion code -> the letters its plain lines may carry beyond the free ones.
-        self._arcs = {code: table.plain_arcs[code] for code in self._motion.values()
+        # Motion code -> the letters its plain lines may carry beyond the free ones (a P word
+        # has rules of its own, checked before the line runs: such lines take the general path).
+        self._arcs = {code: table.plain_arcs[code] - {"p"} for code in self._motion.values()
                       if code in table.plain_arcs}
         self._lines: dict[str, tuple[dict[str, float], int | None, str]] = {}
 

@@ -221,6 +221,7 @@ class Flow:
         # A break left a while loop, or a skip passed over a break of a while loop under way: the
         # next do loop's closing while does not loop back (rs274 2.9.0~pre1 does so).
         self.broken_while = False
+        self.resumed: tuple[Frame, int, Body, int] | None = None
         # Where the skip from an o-word (constant label) to a keyword ends, once found.
         self.jumps: dict[tuple[Body, int, str], Mark] = {}
         self.handlers: dict[str, Callable[[Frame, Block, OWord], None]] = {
@@ -288,10 +289,16 @@ class Flow:
         return entry
 
     def end_of_file(self, f: Frame) -> NoReturn:
+        """The end of a body: rs274 shows the last line it read, which is the ``endsub`` (or
+        ``return``) of a call that returned to the end of the file."""
         last = f.body.last()
+        source = f.body.source(last)
+        resumed = self.resumed
+        if resumed is not None and resumed[0] is f and resumed[1] == f.pc:
+            source = resumed[2].source(resumed[3])
         message = ("File ended with no percent sign" if self.interp.percent and len(self.frames) == 1
                    else "File ended with no percent sign or program end")
-        raise NgcProgramError(message, file=f.body.file, line=last, source=f.body.source(last))
+        raise NgcProgramError(message, file=f.body.file, line=last, source=source)
 
     # -- o-words ----------------------------------------------------------------------------
     def oword(self, f: Frame, block: Block) -> None:
@@ -632,7 +639,10 @@ class Flow:
     _endsub = _return
 
     def pop(self) -> None:
-        self.frames.pop()
+        left = self.frames.pop()
+        caller = self.frames[-1]
+        # Where the caller resumes, and the last line read before (for the end-of-file message).
+        self.resumed = (caller, caller.pc, left.body, left.pc - 1)
         self.interp.machine.state.call_level = len(self.frames) - 1
 
     def _program(self, f: Frame, block: Block, ow: OWord) -> None:

@@ -128,14 +128,14 @@ _G: dict[int, Code] = {
     50: _motion(None, "ijpq"),  # G5 cubic spline
     51: _motion(None, "ij"),  # G5.1 quadratic spline
     52: _motion(None, "pl"),  # G5.2 NURBS
-    330: _motion(None, "k"),  # G33 spindle synchronized
-    331: _motion(None, "ik"),  # G33.1 rigid tap
+    330: _motion(None, "k$"),  # G33 spindle synchronized
+    331: _motion(None, "ik$"),  # G33.1 rigid tap
     382: _motion(None),
     383: _motion(None),
     384: _motion(None),
     385: _motion(None),
     730: _motion(None, "rlq"),
-    760: _motion(None, "ijklpqrhe"),
+    760: _motion(None, "ijklpqrhe$"),
     800: _motion("cancel_motion"),
     810: _motion(None, "rl"),
     820: _motion(None, "rlp"),
@@ -161,7 +161,7 @@ _G: dict[int, Code] = {
     # group 5: feed mode
     930: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode"),
     940: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode"),
-    950: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode"),
+    950: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode", "$"),
     # group 6: units
     200: Code(G_UNITS, STEP_UNITS, "units"),
     210: Code(G_UNITS, STEP_UNITS, "units"),
@@ -194,8 +194,8 @@ _G: dict[int, Code] = {
     611: Code(G_CONTROL, STEP_CONTROL, "control_mode"),
     640: Code(G_CONTROL, STEP_CONTROL, "control_mode", "pq"),
     # group 14: spindle speed mode
-    960: _no(G_SPINDLE_MODE, STEP_SPINDLE_MODE, "d"),
-    970: Code(G_SPINDLE_MODE, STEP_SPINDLE_MODE, ""),  # G97: the mode rs274 starts in
+    960: _no(G_SPINDLE_MODE, STEP_SPINDLE_MODE, "d$"),
+    970: Code(G_SPINDLE_MODE, STEP_SPINDLE_MODE, "", "$"),  # G97: the mode rs274 starts in
     # group 15: lathe diameter / radius mode
     70: _no(G_LATHE, STEP_LATHE),
     80: _no(G_LATHE, STEP_LATHE),
@@ -207,10 +207,10 @@ _M: dict[int, Code] = {
     2: Code(M_STOP, STEP_STOP, "stop"),
     30: Code(M_STOP, STEP_STOP, "stop"),
     60: Code(M_STOP, STEP_STOP, "stop"),
-    3: Code(M_SPINDLE, STEP_SPINDLE, "spindle"),
-    4: Code(M_SPINDLE, STEP_SPINDLE, "spindle"),
-    5: Code(M_SPINDLE, STEP_SPINDLE, "spindle"),
-    19: _no(M_SPINDLE, STEP_SPINDLE, "rpq"),
+    3: Code(M_SPINDLE, STEP_SPINDLE, "spindle", "$"),
+    4: Code(M_SPINDLE, STEP_SPINDLE, "spindle", "$"),
+    5: Code(M_SPINDLE, STEP_SPINDLE, "spindle", "$"),
+    19: _no(M_SPINDLE, STEP_SPINDLE, "rpq$"),
     6: _no(M_TOOL, STEP_TOOL_CHANGE),
     61: _no(M_TOOL, STEP_TOOL_CHANGE, "q"),
     7: Code(M_COOLANT, STEP_COOLANT, "coolant"),
@@ -219,7 +219,7 @@ _M: dict[int, Code] = {
     48: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides"),
     49: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides"),
     50: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
-    51: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
+    51: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p$"),
     52: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
     53: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
     62: _no(M_IO, STEP_IO, "p"),
@@ -259,6 +259,8 @@ UNUSED_WORD_MESSAGES: tuple[tuple[str, str], ...] = (
     ("d", "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it"),
     ("h", "H word with no G43 or G76 to use it"),
     ("e", "E word with no G70, G76, M66, M67 or M68 to use it"),
+    ("$", "$ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 or "
+          "G97 to use it"),
 )
 
 AXIS_LETTERS = _AXES

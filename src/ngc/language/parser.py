@@ -31,7 +31,7 @@ COMMENT = 2
 
 Item = tuple[int, object, object]
 
-_LETTERS = "abcdefghijklmpqrstxyz"
+_LETTERS = "abcdefghijklmpqrstxyz$"
 _LETTER_SPLIT = re.compile(r"([a-z])")
 _N_WORD = re.compile(r"n(\d+)(?:\.\d*)?")
 _LINE_NUMBER = re.compile(r"(\d+)(?:\.\d*)?")
@@ -89,7 +89,7 @@ def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool 
             block.delete = True
             text = text[1:]
         if not (fast and _fast(block, text, table)):
-            _Reader(text, block).read_line()
+            _Reader(text, block, table).read_line()
             _resolve_constant(block, table)
     except NgcError as err:
         if err.column is not None:
@@ -213,12 +213,17 @@ def raw_column(raw: str, index: int) -> int:
 class _Reader:
     """Reads the items of a normalized line, rs274's way (the general path)."""
 
-    __slots__ = ("block", "i", "s")
+    __slots__ = ("block", "depth", "i", "read", "s", "table")
 
-    def __init__(self, text: str, block: Block) -> None:
+    def __init__(self, text: str, block: Block, table: CodeTable = LINUXCNC) -> None:
         self.s = text
         self.i = 0
         self.block = block
+        self.table = table
+        # The constant words read so far: rs274 raises a word's errors (a repeated letter, two
+        # codes of one group) when it reads the word, before it reads what follows.
+        self.read = Words()
+        self.depth = 0  # brackets open
 
     def error(self, message: str, at: int | None = None) -> NgcSyntaxError:
         return NgcSyntaxError(message, column=(self.i if at is None else at) + 1)
@@ -229,6 +234,7 @@ class _Reader:
         if s.startswith("n"):
             self.read_line_number()
         items = self.block.items
+        seen: set[str] = set()
         n = len(s)
         while self.i < n:
             c = s[self.i]
@@ -239,8 +245,15 @@ class _Reader:
             elif c == "#":
                 items.append(self.read_parameter_setting())
             elif c in _LETTERS or c in POLAR_LETTERS:
+                if c in seen:
+                    raise self.error(f"Multiple {c} words on one line")
+                if c not in "gm":
+                    seen.add(c)
                 self.i += 1
-                items.append((WORD, c, self.read_value()))
+                value = self.read_value()
+                items.append((WORD, c, value))
+                if type(value) is float:
+                    add_word(self.read, c, value, self.table)
             elif c == "o" and not items:
                 self.read_oword()
             else:
@@ -336,7 +349,8 @@ class _Reader:
             return self.read_parameter_value()
         if "a" <= c <= "z":
             return self.read_function()
-        if c in "+-" and self.i + 1 < len(s) and s[self.i + 1] in "+-[#abcdefghijklmnopqrstuvwxyz":
+        if c in "+-" and (self.depth > 0 or (self.i + 1 < len(s)
+                          and s[self.i + 1] in "+-[#abcdefghijklmnopqrstuvwxyz")):
             self.i += 1
             inner = self.read_value()
             if c == "+":
@@ -359,6 +373,7 @@ class _Reader:
     def read_expression(self) -> ex.Value:
         start = self.i
         self.i += 1  # '['
+        self.depth += 1
         operands = [self.read_value()]
         operators: list[str] = []
         s = self.s
@@ -367,6 +382,7 @@ class _Reader:
                 raise self.error("Unclosed expression", start)
             if s[self.i] == "]":
                 self.i += 1
+                self.depth -= 1
                 break
             op = next((o for o in _OPERATORS if s.startswith(o, self.i)), None)
             if op is None:

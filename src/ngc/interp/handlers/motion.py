@@ -137,6 +137,8 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
     if plane is None:
         raise NgcSemanticError("Cannot do an arc in planes G17.1, G18.1, or G19.1")
     first, second, helix, letters, forbidden, pname, labels = plane
+    if st.feed_mode == 930 and "f" not in w:
+        raise NgcSemanticError("F word missing with inverse time arc move")
     if forbidden in w:
         raise NgcSemanticError(f"{forbidden.upper()} word given for arc in {pname} plane")
     has_ij = letters[0] in w or letters[1] in w
