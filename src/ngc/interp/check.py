@@ -28,8 +28,11 @@ def check(st: State, r: Words, table: CodeTable) -> None:
     if non_modal == codes.G_MACHINE_COORDINATES:
         _check_g53(st, r, motion)
     if r.others:
-        _check_other_words(st, r, motion, non_modal, table)
-        if "p" in r.w and (motion in _ARCS or (motion is None and r.moves and st.motion in _ARCS)):
+        active = motion
+        if motion is None and r.moves and non_modal not in table.axis_users:
+            active = st.motion  # the modal motion the line's axis words run
+        _check_other_words(r, active, table)
+        if "p" in r.w and active in _ARCS:
             _check_turns(r.w["p"])
     for code in g.values():
         row = table.g[code]
@@ -72,20 +75,16 @@ def _check_axis_users(st: State, motion: int | None, non_modal: int | None, tabl
         raise NgcSemanticError("Cannot use axis values without a g code that uses them")
 
 
-def _check_other_words(
-    st: State, r: Words, motion: int | None, non_modal: int | None, table: CodeTable
-) -> None:
+def _check_other_words(r: Words, active: int | None, table: CodeTable) -> None:
     """Every word beyond X Y Z A B C F S needs a code on the line (or the modal motion its axis
-    words run) that gives it a use."""
+    words run, ``active``) that gives it a use."""
     w = r.w
     if r.m.get(codes.M_USER) == 99 and ("p" in w or "l" in w):
         raise NgcSyntaxError("Unexpected character after O-word")
-    if motion is None and r.moves and non_modal not in table.axis_users:
-        motion = st.motion
     used = "".join(table.g[code].uses for code in r.g.values())
     used += "".join(table.m[code].uses for code in r.m.values())
-    if motion is not None and codes.G_MOTION not in r.g:
-        used += table.g[motion].uses
+    if active is not None and codes.G_MOTION not in r.g:
+        used += table.g[active].uses
     for letter, message in codes.UNUSED_WORD_MESSAGES:
         if letter in w and letter not in used:
             raise NgcSemanticError(message)

@@ -176,7 +176,24 @@ def _quadrant(degrees: float) -> tuple[int, float]:
     return k % 4, float(angle - k * _PI / 2)
 
 
+# sin of the multiples of 30 degrees whose value is not 0: the long double result rounds to these
+# doubles exactly (COS[120] is -0.5, as rs274 gives it; the double computation is 1 ulp off).
+_SIN_30 = (0.0, 0.5, math.sqrt(3.0) / 2, 1.0, math.sqrt(3.0) / 2, 0.5,
+           0.0, -0.5, -math.sqrt(3.0) / 2, -1.0, -math.sqrt(3.0) / 2, -0.5)
+
+
+def _sin_30(x: float) -> float | None:
+    """sin of ``x`` degrees when ``x`` is a multiple of 30 (not of 180), else None."""
+    if x % 30.0 != 0.0 or abs(x) > 1e15:
+        return None
+    r = _SIN_30[int(x // 30.0) % 12]
+    return r or None
+
+
 def sin_degrees(x: float) -> float:
+    exact = _sin_30(x)
+    if exact is not None:
+        return exact
     r = math.sin(math.radians(x))
     if abs(r) > _NEAR_ZERO:
         return r
@@ -185,6 +202,9 @@ def sin_degrees(x: float) -> float:
 
 
 def cos_degrees(x: float) -> float:
+    exact = _sin_30(x + 90.0)
+    if exact is not None:
+        return exact
     r = math.cos(math.radians(x))
     if abs(r) > _NEAR_ZERO:
         return r
@@ -193,6 +213,8 @@ def cos_degrees(x: float) -> float:
 
 
 def _tan(x: float) -> float:
+    if x % 45.0 == 0.0 and x % 90.0 != 0.0 and abs(x) < 1e15:
+        return 1.0 if int(x // 45.0) % 4 == 1 else -1.0  # TAN[45] is 1, as rs274 gives it
     r = math.tan(math.radians(x))
     if _NEAR_ZERO < abs(r) < 1 / _NEAR_ZERO:
         return r

@@ -41,6 +41,7 @@ _NUMBER_TOKEN = re.compile(r"[-+]?[0-9.]*")
 _STRTOD = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)")
 _NAME_END = re.compile(r"[^a-z]")
 _OPERATOR_INITIALS = frozenset("aeglmnox")
+_NUMBER_START = frozenset("0123456789.")
 _OPERATORS = ("**", "*", "/", "+", "-", "mod", "eq", "ne", "gt", "ge", "lt", "le", "and", "or", "xor")
 
 # The largest numbered parameter (overview.adoc, "Numbered Parameters").
@@ -213,7 +214,7 @@ def raw_column(raw: str, index: int) -> int:
 class _Reader:
     """Reads the items of a normalized line, rs274's way (the general path)."""
 
-    __slots__ = ("block", "depth", "i", "read", "s", "table")
+    __slots__ = ("block", "i", "read", "s", "table")
 
     def __init__(self, text: str, block: Block, table: CodeTable = LINUXCNC) -> None:
         self.s = text
@@ -223,7 +224,6 @@ class _Reader:
         # The constant words read so far: rs274 raises a word's errors (a repeated letter, two
         # codes of one group) when it reads the word, before it reads what follows.
         self.read = Words()
-        self.depth = 0  # brackets open
 
     def error(self, message: str, at: int | None = None) -> NgcSyntaxError:
         return NgcSyntaxError(message, column=(self.i if at is None else at) + 1)
@@ -349,8 +349,9 @@ class _Reader:
             return self.read_parameter_value()
         if "a" <= c <= "z":
             return self.read_function()
-        if c in "+-" and (self.depth > 0 or (self.i + 1 < len(s)
-                          and s[self.i + 1] in "+-[#abcdefghijklmnopqrstuvwxyz")):
+        # A sign before anything but a digit or a point is an operator on the value after it
+        # (rs274: "X-{" fails on '' after the sign, "X-" at the end of the line on '-').
+        if c in "+-" and self.i + 1 < len(s) and s[self.i + 1] not in _NUMBER_START:
             self.i += 1
             inner = self.read_value()
             if c == "+":
@@ -373,7 +374,6 @@ class _Reader:
     def read_expression(self) -> ex.Value:
         start = self.i
         self.i += 1  # '['
-        self.depth += 1
         operands = [self.read_value()]
         operators: list[str] = []
         s = self.s
@@ -382,7 +382,6 @@ class _Reader:
                 raise self.error("Unclosed expression", start)
             if s[self.i] == "]":
                 self.i += 1
-                self.depth -= 1
                 break
             op = next((o for o in _OPERATORS if s.startswith(o, self.i)), None)
             if op is None:
