@@ -129,9 +129,16 @@ def g10(it: Machine, r: Resolved) -> None:
     if index != st.coord_index:
         it.emit(ops.Comment("interpreter: setting coordinate system origin"))
         return
-    machine = _keep_machine_position(it)
+    # rs274 carries the current point over to the new origin and rotation as if there were no
+    # G92/G52 offset (with one, the machine position does not stay put).
+    x, y = rotate(st.pos[0], st.pos[1], st.rotation) if st.rotation else (st.pos[0], st.pos[1])
+    point = [x, y, *st.pos[2:]]
+    old = st.g5x
     load_system(it, index)
-    st.pos = to_program(st, machine)
+    point = [point[i] + old[i] - st.g5x[i] for i in range(AXES)]
+    if st.rotation:
+        point[0], point[1] = rotate(point[0], point[1], -st.rotation)
+    st.pos = point
     emit_g5x(it)
     emit_rotation(it)
 
