@@ -24,12 +24,12 @@ from typing import NamedTuple
 from ..canon import ops
 from ..errors import NgcSemanticError
 from ..language.codes import FREE_LETTERS, G_CANCEL_MOTION, G_MOTION, CodeTable
-from ..language.expressions import Value
+from ..language.expressions import Expr, Value
 from ..language.parser import PARAM, WORD, Block, n_label, split_plain, words_of
 from ..language.words import Words
 from .handlers import modes, motion, program
 from .machine import Machine
-from .parameters import check_number_writable, check_writable
+from .parameters import INI_PREFIX, PREDEFINED, Parameters, check_number_writable, check_writable
 
 # The motion handlers a plain line may run.
 PLAIN_HANDLERS = frozenset({"traverse", "feed", "arc"})
@@ -209,10 +209,14 @@ class FastPath:
                 return None  # a computed parameter number: the general path checks it
             if isinstance(key, int):
                 check_number_writable(key)
+            elif key in PREDEFINED or key.startswith(INI_PREFIX):
+                return None  # read-only, or perhaps: the general path says
             targets.append(key)
             values.append(value)  # type: ignore[arg-type]
         params = self.m.params
         pairs = list(zip(targets, values, strict=True))
+        if len(pairs) == 1 and isinstance(targets[0], str) and type(values[0]) is not float:
+            return _one_named_setting(params, targets[0], values[0])  # type: ignore[arg-type]
 
         def run() -> None:
             read = []
@@ -244,8 +248,26 @@ class FastPath:
                 return None
         params = self.m.params
         convert = self.convert
+        constant = {k: v for k, v in words if type(v) is float}
+        computed = [(k, v) for k, v in words if type(v) is not float]
 
         def run() -> None:
-            convert({k: v if type(v) is float else v(params) for k, v in words}, code)  # type: ignore[operator]
+            w = constant.copy()
+            for k, v in computed:
+                w[k] = v(params)  # type: ignore[operator]
+            convert(w, code)
 
         return run
+
+
+def _one_named_setting(params: Parameters, name: str, value: Expr) -> Callable[[], None]:
+    """``#<name> = [...]``: the name exists (reading 0) before its value is read, as rs274 has it."""
+    global_ = name.startswith("_")
+
+    def run() -> None:
+        scope = params.globals if global_ else params.locals[-1]
+        if name not in scope:
+            scope[name] = 0.0
+        scope[name] = value(params)
+
+    return run
