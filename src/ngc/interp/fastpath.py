@@ -156,10 +156,6 @@ class FastPath:
             code = st.motion
             if code == G_CANCEL_MOTION:
                 raise NgcSemanticError("Cannot use axis values without a g code that uses them")
-        if code in self._arcs:
-            st.motion = code
-            motion.arc(m, w, motion.end_point(m, w, False), code)
-            return
         st.motion = code
         pos = st.pos
         if st.absolute:
@@ -167,6 +163,9 @@ class FastPath:
                    w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
         else:
             end = motion.relative_end(pos, w)
+        if code in self._arcs:
+            motion.arc(m, w, end, code)
+            return
         if code == 0:
             m.sink.emit(_new(ops.StraightTraverse, end), m.label, m.line)
         elif st.feed_mode == 940 and st.feed != 0.0:

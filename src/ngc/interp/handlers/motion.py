@@ -164,7 +164,8 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
         length = _arc_length(s1, s2, e1, e2, c1, c2, rotation, end[helix] - start[helix])
         st.feed = _inverse_rate(w["f"], length)
         it.emit(ops.SetFeedRate(st.feed))
-    it.emit(ops.ArcFeed(e1, e2, c1, c2, rotation, end[helix], end[3], end[4], end[5]))
+    it.sink.emit(_new(ops.ArcFeed, (e1, e2, c1, c2, rotation, end[helix], end[3], end[4], end[5])),
+                 it.label, it.line)
     st.pos = end
 
 
