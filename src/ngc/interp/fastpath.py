@@ -141,6 +141,8 @@ class FastPath:
         """A plain line: F, S, then the motion (explicit or modal), as the general path runs it."""
         m = self.m
         st = m.state
+        if code is None and st.motion == G_CANCEL_MOTION and not _AXES.isdisjoint(w):
+            raise NgcSemanticError("Cannot use axis values without a g code that uses them")
         if "f" in w:
             f = w["f"]
             if f >= 0.0 and st.feed_mode == 940:
@@ -154,8 +156,6 @@ class FastPath:
             if _AXES.isdisjoint(w):
                 return
             code = st.motion
-            if code == G_CANCEL_MOTION:
-                raise NgcSemanticError("Cannot use axis values without a g code that uses them")
         st.motion = code
         pos = st.pos
         if st.absolute:

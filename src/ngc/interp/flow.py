@@ -84,13 +84,15 @@ class Mark:
     """Where a skip stopped: the line, its o-word and its source text; and the labels of the
     ``break`` lines the skip passed over (rs274 takes note of them, see ``Flow.broken_while``)."""
 
-    __slots__ = ("breaks", "line", "oword", "source")
+    __slots__ = ("breaks", "computed", "line", "oword", "source")
 
-    def __init__(self, line: int, oword: OWord, source: str, breaks: tuple[str, ...] = ()) -> None:
+    def __init__(self, line: int, oword: OWord, source: str, breaks: tuple[str, ...] = (),
+                 computed: bool = False) -> None:
         self.line = line
         self.oword = oword
         self.source = source
         self.breaks = breaks
+        self.computed = computed
 
 
 class Body:
@@ -356,6 +358,7 @@ class Flow:
         it = self.interp
         body = f.body
         breaks: list[str] = []
+        computed = False  # a computed label was passed over: the skip may end otherwise next time
         params = it.machine.params
         number = start
         while True:
@@ -397,10 +400,19 @@ class Flow:
             if ow is None or ow.keyword == NOTHING:
                 continue
             try:
+                # rs274 computes the label of every o-word it passes over (o[1/0] is an error
+                # there too); a definition or a search reads undefined names as 0.
+                if ow.label is not None:
+                    passed = ow.label
+                else:
+                    computed = True
+                    assert ow.label_expr is not None
+                    context = params if mode == BRANCH else _Skimming(params)
+                    passed = number_label(evaluate(ow.label_expr, context))
                 if mode == DEFINE:
                     if ow.keyword in ("sub", PROGRAM):
                         raise NgcSemanticError("Nested subroutine definition")
-                    if ow.keyword not in ("endsub", "return") or self.label(ow) != label:
+                    if ow.keyword not in ("endsub", "return") or passed != label:
                         continue
                     value = [evaluate(a, _Skimming(params)) for a in ow.args]
                     if ow.keyword == "return":
@@ -408,10 +420,10 @@ class Flow:
                     st = it.machine.state
                     st.value, st.value_returned = (value[0], 1.0) if value else (0.0, 0.0)
                     return Mark(number, ow, source)
-                if ow.keyword in kinds and self.label(ow) == label:
-                    return Mark(number, ow, source, tuple(breaks))
+                if ow.keyword in kinds and passed == label:
+                    return Mark(number, ow, source, tuple(breaks), computed)
                 if ow.keyword == "break" and mode == BRANCH:
-                    breaks.append(self.label(ow))
+                    breaks.append(passed)
             except NgcError as err:
                 raise err.locate(file=body.file, line=number, source=source) from None
 
@@ -422,7 +434,7 @@ class Flow:
         found = self.jumps.get(key) if ow.label is not None else None
         if found is None:
             found = self.skip(f, start, label, kinds, BRANCH)
-            if ow.label is not None:
+            if ow.label is not None and not found.computed:
                 self.jumps[key] = found
         for passed in found.breaks:
             if passed in f.open_whiles or (passed == label and kinds[0] == "endwhile"):

@@ -223,7 +223,7 @@ def _tan(x: float) -> float:
 
 
 UNARY: dict[str, Callable[[float], float]] = {
-    "abs": abs,
+    "abs": lambda x: -x if x < 0 else x,  # as rs274: ABS[-0] is -0
     "acos": _acos,
     "asin": _asin,
     "cos": cos_degrees,

@@ -79,8 +79,11 @@ def _polar_end(pos: list[float], w: dict[str, float], absolute: bool) -> list[fl
 
 def relative_end(pos: list[float], w: dict[str, float]) -> list[float]:
     """G91: axis words are distances from the current point."""
-    return [pos[0] + w.get("x", 0.0), pos[1] + w.get("y", 0.0), pos[2] + w.get("z", 0.0),
-            pos[3] + w.get("a", 0.0), pos[4] + w.get("b", 0.0), pos[5] + w.get("c", 0.0)]
+    end = list(pos)  # an axis not given keeps its value (a -0 stays -0, as in rs274)
+    for i, letter in enumerate("xyzabc"):
+        if letter in w:
+            end[i] += w[letter]
+    return end
 
 
 _new = tuple.__new__
@@ -137,6 +140,8 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
     if plane is None:
         raise NgcSemanticError("Cannot do an arc in planes G17.1, G18.1, or G19.1")
     first, second, helix, letters, forbidden, pname, labels = plane
+    if "r" not in w and "i" not in w and "j" not in w and "k" not in w:
+        raise NgcSemanticError("R i j k words all missing for arc")
     if st.feed_mode == 930 and "f" not in w:
         raise NgcSemanticError("F word missing with inverse time arc move")
     if forbidden in w:
