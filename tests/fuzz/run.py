@@ -39,11 +39,12 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 TESTS = HERE.parent
 REPO = TESTS.parent
-for _p in (str(REPO / "src"), str(TESTS), str(HERE)):
+for _p in (str(REPO / "src"), str(TESTS), str(TESTS / "golden"), str(HERE)):
     if _p not in sys.path:
         sys.path.insert(0, _p)
 
 import gen  # noqa: E402
+from regen import child_env  # noqa: E402
 
 from transcript import messages, normalize  # noqa: E402
 
@@ -80,15 +81,6 @@ class Result:
     @property
     def differs(self) -> bool:
         return not self.ref.same(self.ngc)
-
-
-def child_env(home: Path) -> dict[str, str]:
-    env = dict(os.environ)
-    env["HOME"] = str(home)
-    env["LC_ALL"] = "C"
-    env.pop("LANGUAGE", None)
-    env.pop("INI_FILE_NAME", None)
-    return env
 
 
 @contextlib.contextmanager
