@@ -25,6 +25,7 @@ from ..canon import ops
 from ..errors import NgcSemanticError
 from ..language.codes import FREE_LETTERS, G_CANCEL_MOTION, G_MOTION, CodeTable
 from ..language.expressions import Expr, Value
+from ..language.lexer import C_SPACE
 from ..language.parser import PARAM, WORD, Block, n_label, split_plain, words_of
 from ..language.words import Words
 from .handlers import modes, motion, program
@@ -112,7 +113,7 @@ class FastPath:
                 cache[raw] = hit
             else:
                 w, g, digits = found
-                block = Block(number, raw.rstrip())
+                block = Block(number, raw.rstrip(C_SPACE))
                 block.resolved = words_of(w, g, self.table)
                 if digits is not None:
                     block.n_number = int(digits)
@@ -182,7 +183,7 @@ class FastPath:
         found = split_plain(raw.replace(" ", "").lower())
         hit = None if found is None else self.entry(found)
         if hit is not None:
-            return (*hit, raw.rstrip())
+            return (*hit, raw.rstrip(C_SPACE))
         block = parse(raw, number)
         run = self.specialise(block)
         return block if run is None else Compiled(block, run)

@@ -36,6 +36,7 @@ from ..errors import (
     NgcSyntaxError,
 )
 from ..language.expressions import evaluate
+from ..language.lexer import C_SPACE
 from ..language.oword import KEYWORDS, MAX_ARGS, NOTHING, PROGRAM, OWord, number_label
 from ..language.parser import Block, skim_oword
 from .fastpath import Compiled, Plain
@@ -119,7 +120,7 @@ class Body:
         if entry is None:
             return ""
         if isinstance(entry, str):
-            return entry.rstrip()
+            return entry.rstrip(C_SPACE)
         if isinstance(entry, Block):
             return entry.source
         if isinstance(entry, Compiled):
@@ -286,7 +287,7 @@ class Flow:
         try:
             entry = self.interp.compile_line(raw, number)
         except NgcError as err:
-            raise err.locate(file=body.file, line=number, source=raw.rstrip()) from None
+            raise err.locate(file=body.file, line=number, source=raw.rstrip(C_SPACE)) from None
         body.lines[number - body.first] = entry
         return entry
 
@@ -382,7 +383,7 @@ class Flow:
                     it.finish_percent()
                     prefix = "O#" if mode == BRANCH else "O"
                     raise NgcProgramError(f"Failed to find sub '{prefix}{label}' before EOF",
-                                          file=body.file, line=number, source=entry.rstrip())
+                                          file=body.file, line=number, source=entry.rstrip(C_SPACE))
                 if it.machine.state.blocks_deleted and entry.lstrip(" \t").startswith("/"):
                     continue
                 try:
@@ -390,8 +391,8 @@ class Flow:
                 except NgcError as err:
                     if mode == DEFINE and err.message.startswith("Unknown control"):
                         continue
-                    raise err.locate(file=body.file, line=number, source=entry.rstrip()) from None
-                source = entry.rstrip()
+                    raise err.locate(file=body.file, line=number, source=entry.rstrip(C_SPACE)) from None
+                source = entry.rstrip(C_SPACE)
             else:
                 if entry.delete and it.machine.state.blocks_deleted:
                     continue
@@ -636,19 +637,31 @@ class Flow:
     def _return(self, f: Frame, block: Block, ow: OWord) -> None:
         it = self.interp
         if f.sub is None:
-            raise NgcSemanticError(_quote(block, "not in a subroutine definition"))
+            if self.resumed is None:  # no call has returned yet
+                raise NgcSemanticError(_quote(block, "not in a subroutine definition"))
+            # rs274, once a call has returned: ``return`` in the main program sets #<_value>
+            # and goes on; ``endsub`` is refused.
+            if ow.keyword == "endsub":
+                raise NgcSemanticError("Not in subroutine definition")
+            self._set_value(ow)
+            return
         if f.sub.fanuc:
             raise NgcSemanticError("Fanuc 'O....' subroutine definition must end with 'M99'")
-        if ow.args:
-            it.machine.state.value = evaluate(ow.args[0], it.machine.params)
-            it.machine.state.value_returned = 1.0
-        else:
-            it.machine.state.value = it.machine.state.value_returned = 0.0
+        self._set_value(ow)
         it.machine.params.numbered[1 : ARGUMENT_PARAMETERS + 1] = f.saved
         it.machine.params.locals.pop()
         self.pop()
 
     _endsub = _return
+
+    def _set_value(self, ow: OWord) -> None:
+        """#<_value> and #<_value_returned> from a ``return`` or ``endsub``."""
+        st = self.interp.machine.state
+        if ow.args:
+            st.value = evaluate(ow.args[0], self.interp.machine.params)
+            st.value_returned = 1.0
+        else:
+            st.value = st.value_returned = 0.0
 
     def pop(self) -> None:
         left = self.frames.pop()

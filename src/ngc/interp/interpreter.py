@@ -15,6 +15,7 @@ from ..canon import ops
 from ..errors import NgcError, NgcOpenError, NgcProgramError, NgcSemanticError, NgcSyntaxError
 from ..language import codes
 from ..language.codes import LINUXCNC, CodeTable
+from ..language.lexer import C_SPACE
 from ..language.parser import Block, parse_line
 from .check import check
 from .dispatch import Dispatcher
@@ -209,10 +210,10 @@ class Interpreter:
                 message = "File ended with no percent sign" if percent else (
                     "File ended with no percent sign or program end"
                 )
-                raise NgcProgramError(message, file=file, line=number, source=raw.rstrip())
+                raise NgcProgramError(message, file=file, line=number, source=raw.rstrip(C_SPACE))
         except NgcError as err:
             # The fast path's errors know neither their line nor their file; the others do.
-            raise err.locate(file=file, line=number, source=raw.rstrip()) from None
+            raise err.locate(file=file, line=number, source=raw.rstrip(C_SPACE)) from None
         self._finish_run()
 
     def _finish_run(self) -> None:
@@ -264,7 +265,7 @@ class Interpreter:
             if self.fast is not None and self.fast.line(raw, number):
                 return
         except NgcError as err:
-            raise err.locate(file=self.file, line=number, source=raw.rstrip()) from None
+            raise err.locate(file=self.file, line=number, source=raw.rstrip(C_SPACE)) from None
         self.execute_line(raw, number)
 
     def compile_line(self, raw: str, number: int) -> Plain | Block | Compiled:
@@ -280,7 +281,7 @@ class Interpreter:
         try:
             block = self.parse(raw, number)
         except NgcError as err:
-            raise err.locate(file=self.file, line=number, source=raw.rstrip()) from None
+            raise err.locate(file=self.file, line=number, source=raw.rstrip(C_SPACE)) from None
         self.execute(block)
 
     def execute(self, block: Block) -> None:

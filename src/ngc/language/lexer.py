@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from ..errors import NgcSyntaxError
 
+# C's isspace: what rs274 trims from the end of a line it shows.
+C_SPACE = " \t\n\v\f\r"
 _WHITESPACE_TABLE = str.maketrans("", "", " \t\r\n")
 # rs274 lower-cases ASCII letters only (C tolower); other bytes pass through.
 _ASCII_LOWER = str.maketrans("ABCDEFGHIJKLMNOPQRSTUVWXYZ", "abcdefghijklmnopqrstuvwxyz")

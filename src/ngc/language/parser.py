@@ -13,7 +13,7 @@ import re
 from ..errors import NgcError, NgcSyntaxError
 from . import expressions as ex
 from .codes import LINUXCNC, POLAR_LETTERS, CodeTable
-from .lexer import normalize
+from .lexer import C_SPACE, normalize
 from .oword import (
     CONDITION,
     KEYWORDS,
@@ -42,6 +42,7 @@ _STRTOD = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)")
 _NAME_END = re.compile(r"[^a-z]")
 _OPERATOR_INITIALS = frozenset("aeglmnox")
 _NUMBER_START = frozenset("0123456789.")
+_TAB_CR = str.maketrans("", "", "\t\r\n")
 _OPERATORS = ("**", "*", "/", "+", "-", "mod", "eq", "ne", "gt", "ge", "lt", "le", "and", "or", "xor")
 
 # The largest numbered parameter (overview.adoc, "Numbered Parameters").
@@ -82,7 +83,7 @@ def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool 
     >>> b.label, [(k, key) for k, key, _ in b.items]
     ('N10    ', [(0, 'g'), (0, 'x'), (0, 'y'), (2, '(cut)')])
     """
-    source = raw.rstrip()
+    source = raw.rstrip(C_SPACE)
     block = Block(line, source)
     try:
         text = normalize(raw)
@@ -111,12 +112,12 @@ def skim_oword(raw: str, line: int = 0) -> OWord | None:
             text = text[m.end() :] if m else text
         if not text.startswith("o"):
             return None
-        block = Block(line, raw.rstrip())
+        block = Block(line, raw.rstrip(C_SPACE))
         _Reader(text, block).read_oword(skim=True)
     except NgcError as err:
         if err.column is not None:
             err.column = raw_column(raw, err.column - 1)
-        raise err.locate(file=None, line=line, source=raw.rstrip()) from None
+        raise err.locate(file=None, line=line, source=raw.rstrip(C_SPACE)) from None
     return block.oword
 
 
@@ -158,6 +159,8 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
         return None
     if len(w) != len(letters) or not _FAST_LETTERS.issuperset(w):
         return None
+    if not text.isprintable() and not text.translate(_TAB_CR).isprintable():
+        return None  # float() takes a form feed or \v as white space; rs274 does not
     return w, w.pop("g", None), digits
 
 
