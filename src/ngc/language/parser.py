@@ -86,7 +86,7 @@ def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool 
     source = raw.rstrip(C_SPACE)
     block = Block(line, source)
     try:
-        text = normalize(raw)
+        text = normalize(source)  # rs274 drops the white space that ends a line
         if text.startswith("/"):
             block.delete = True
             text = text[1:]
