@@ -754,6 +754,76 @@ def ending(g: Gen) -> None:
         g.lines.append("%")
 
 
+def st_mixed_line(g: Gen) -> None:
+    """One line holding codes of several modal groups, M codes, F, S and a comment, in random
+    order: the order of execution, not the order of the words, decides what happens."""
+    rng = g.rng
+    words: list[str] = []
+    pick = rng.random
+    if pick() < 0.3:
+        g.plane = rng.choice(["17", "18", "19"])
+        words.append("G" + g.plane)
+    if pick() < 0.3:
+        g.absolute = rng.random() < 0.6
+        words.append("G90" if g.absolute else "G91")
+    if pick() < 0.15:
+        g.arc_absolute = rng.random() < 0.5
+        words.append("G90.1" if g.arc_absolute else "G91.1")
+    if pick() < 0.2:
+        g.metric = rng.random() < 0.6
+        words.append("G21" if g.metric else "G20")
+    if pick() < 0.25:
+        words.append(rng.choice(["G61", "G61.1", "G64", f"G64 P{g.num(rng.uniform(0, 0.1), 3)}",
+                                 f"G64 P{g.num(rng.uniform(0, 0.1), 3)} Q{g.num(rng.uniform(0, 0.1), 3)}"]))
+    if pick() < 0.15:
+        words.append(rng.choice(["G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"]))
+    for code, chance in (("G98", 0.05), ("G99", 0.05), ("G40", 0.1), ("G49", 0.1), ("G80", 0.05)):
+        if pick() < chance:
+            words.append(code)
+    if pick() < 0.2:
+        code = rng.choice(["3", "4", "5"])
+        g.spindle_on = code != "5"
+        words.append("M" + code)
+    if pick() < 0.2:
+        words.append(rng.choice(["M7", "M8", "M9"]))
+    if pick() < 0.1:
+        words.append(rng.choice(["M48", "M49", "M50", "M51", "M50 P0", "M51 P1", "M53 P1"]))
+    if pick() < 0.25 or (g.feed_mode == "95" and g.speed == 0):
+        g.speed = round(rng.uniform(100, 20000))
+        words.append(f"S{g.speed}")
+    if pick() < 0.1:
+        g.feed_mode = rng.choice(["94", "95"])
+        words.append("G" + g.feed_mode)
+        g.feed = 0.0
+        if g.feed_mode == "95" and g.speed == 0:
+            g.speed = 1000
+            words.append("S1000")
+    motion = pick() < 0.6
+    if motion:
+        g.motion = rng.choice(["0", "1", "1"])
+        if g.motion == "1" and (g.feed == 0 or pick() < 0.3):
+            g.feed = round(rng.uniform(10, 2000), 1)
+            words.append(f"F{g.feed}")
+        words.append("G" + g.motion)
+        for axis in rng.sample("XYZ", rng.randint(1, 3)):
+            words.append(f"{axis}{g.num(g.coord(-20, 20))}")
+        if pick() < 0.1:
+            words.append(f"A{g.num(rng.uniform(-90, 90), 2)}")
+        _lose_position(g)
+    elif pick() < 0.3:
+        words.append(rng.choice(["G92.1", "G92.2", "G92.3", "G28.1", "G30.1",
+                                 f"G92 X{g.num(g.coord(-5, 5))}", f"G52 Y{g.num(g.coord(-5, 5))}",
+                                 "G28", "G30", f"G28 Z{g.num(g.coord(0, 10))}"]))
+        _lose_position(g)
+    if pick() < 0.1:
+        words.append(f"G4 P{g.num(rng.uniform(0, 2), 2)}")
+    rng.shuffle(words)
+    if pick() < 0.2:
+        words.append(g.comment())
+    if words:
+        g.emit(g.words(*words))
+
+
 def body(g: Gen, table: list[tuple[float, Callable[[Gen], None]]], count: int) -> None:
     weights = [w for w, _ in table]
     fns = [f for _, f in table]
@@ -776,6 +846,13 @@ def gen_motion(seed: int) -> str:
 
 def gen_offsets(seed: int) -> str:
     return text_of(_program("offsets", seed, OFFSETS, 5, 40).lines)
+
+
+MIXED: list[tuple[float, Callable[[Gen], None]]] = [*MOTION, (30, st_mixed_line)]
+
+
+def gen_mixed(seed: int) -> str:
+    return text_of(_program("mixed", seed, MIXED, 5, 40).lines)
 
 
 def gen_oword(seed: int) -> str:
@@ -950,6 +1027,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "motion": gen_motion,
     "offsets": gen_offsets,
     "oword": gen_oword,
+    "mixed": gen_mixed,
     "failing": gen_failing,
 }
 

@@ -47,6 +47,9 @@ G_COORD_SYSTEM = 12
 G_CONTROL = 13
 G_SPINDLE_MODE = 14
 G_LATHE = 15
+# G92.1 / G92.2 / G92.3: listed in group 0, but rs274 lets them share a line with another
+# group-0 code (G4, G10, G28, G92 ...) and runs them after it.
+G_OFFSET_RESET = 16
 
 # M-code modal groups (overview.adoc table "M-code Modal Groups").
 M_STOP = 4
@@ -88,8 +91,9 @@ STEP_DISTANCE = 22
 STEP_ARC_DISTANCE = 23
 STEP_RETRACT = 24
 STEP_NON_MODAL = 25
-STEP_MOTION = 26
-STEP_STOP = 27
+STEP_OFFSET_RESET = 26
+STEP_MOTION = 27
+STEP_STOP = 28
 
 _ARC_WORDS = "ijkrp"
 _AXES = "xyzabc"
@@ -117,9 +121,9 @@ _G: dict[int, Code] = {
     530: Code(G_NON_MODAL, STEP_MOTION, ""),  # G53: read by the motion handlers
     920: Code(G_NON_MODAL, STEP_NON_MODAL, "g92", axes=True, requires=_AXES,
               missing="All axes missing with g52 or g92"),
-    921: Code(G_NON_MODAL, STEP_NON_MODAL, "g92_reset"),
-    922: Code(G_NON_MODAL, STEP_NON_MODAL, "g92_reset"),
-    923: Code(G_NON_MODAL, STEP_NON_MODAL, "g92_reset"),
+    921: Code(G_OFFSET_RESET, STEP_OFFSET_RESET, "g92_reset"),
+    922: Code(G_OFFSET_RESET, STEP_OFFSET_RESET, "g92_reset"),
+    923: Code(G_OFFSET_RESET, STEP_OFFSET_RESET, "g92_reset"),
     # group 1: motion
     0: _motion("traverse"),
     10: _motion("feed"),
