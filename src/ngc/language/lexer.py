@@ -1,6 +1,7 @@
 """Line normalization: what LinuxCNC does to a line before reading its items.
 
-Outside comments, spaces and tabs are dropped and letters are lower-cased; a ``;`` ends the line.
+Outside comments, spaces and tabs are dropped and letters are lower-cased; a ``;`` ends the line
+(kept, so that a ``;`` where a value should be is a bad number, as in rs274).
 A ``( ... )`` comment is kept verbatim (case and spaces) and may not contain another ``(``.
 (overview.adoc, "Format of a line" and "Comments".)
 """
@@ -42,6 +43,7 @@ def normalize(raw: str) -> str:
             i = close + 1
             continue
         if c == ";":
+            out.append(c)  # the reader stops there, or fails on it inside a value, as rs274
             break
         if c not in " \t\r\n":
             out.append(_lower(c))

@@ -259,6 +259,8 @@ class _Reader:
                     add_word(self.read, c, value, self.table)
             elif c == "o" and not items:
                 self.read_oword()
+            elif c == ";":
+                break
             else:
                 raise self.error(f"Bad character '{_show_char(c)}' used")
 
@@ -286,7 +288,7 @@ class _Reader:
                 label_expr = value
         keyword = next((k for k in KEYWORDS if s.startswith(k, self.i)), None)
         if keyword is None:
-            if self.i < len(s) and s[self.i] != "(":
+            if self.i < len(s) and s[self.i] not in "(;":
                 raise self.error("Unknown control command in o word")
             keyword = PROGRAM
         self.i += len(keyword)
@@ -310,7 +312,7 @@ class _Reader:
                     break
                 oword.args.append(self.read_expression())
         self.skip_comments()
-        if self.i < len(s):
+        if self.i < len(s) and s[self.i] != ";":
             raise self.error("Unexpected character after O-word")
 
     def skip_comments(self) -> None:
