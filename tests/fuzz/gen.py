@@ -1008,7 +1008,7 @@ MUTATIONS: list[tuple[float, Callable[[Gen, list[str]], None]]] = [
 
 def gen_failing(seed: int) -> str:
     g = Gen(seed, "failing")
-    base_kind = g.rng.choice(["motion", "motion", "offsets", "oword"])
+    base_kind = g.rng.choice(["motion", "motion", "offsets", "mixed", "oword"])
     lines = KINDS[base_kind](g.rng.randrange(1 << 30)).split("\n")
     if lines and lines[-1] == "":
         lines.pop()

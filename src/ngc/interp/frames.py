@@ -21,8 +21,8 @@ def to_machine(st: State, prog: Vec) -> Vec:
 def to_program(st: State, machine: Vec) -> Vec:
     """Machine coordinates -> program coordinates."""
     p = [machine[i] - st.g5x[i] for i in range(AXES)]
-    if st.rotation:
-        p[0], p[1] = rotate(p[0], p[1], -st.rotation)
+    # Rotated even by 0 degrees: rs274 does, which decides the sign of a zero (G53 X-0).
+    p[0], p[1] = rotate(p[0], p[1], -st.rotation)
     return [p[i] - st.g92[i] for i in range(AXES)]
 
 
