@@ -18,7 +18,10 @@ CASES = Path(__file__).parent / "golden" / "cases"
 
 
 # Known differences, each with its reason; strict, so a case that starts passing is noticed.
-KNOWN: dict[str, str] = {}
+KNOWN: dict[str, str] = {
+    "fuzz-g59-g92-inch-minus-zero": "the sign of a zero: rs274 prints Z -0.0000 after a G59 switch "
+    "with a G92 offset in G20; the order of its arithmetic there is not known yet",
+}
 
 
 def _cases() -> list[object]:
