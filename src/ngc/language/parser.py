@@ -109,7 +109,9 @@ def skim_oword(raw: str, line: int = 0) -> OWord | None:
         text = normalize(raw).lstrip("/")
         if text.startswith("n"):
             m = _N_WORD.match(text)
-            text = text[m.end() :] if m else text
+            if m is None:
+                raise NgcSyntaxError("Bad format unsigned integer", column=1)
+            text = text[m.end() :]
         if not text.startswith("o"):
             return None
         block = Block(line, raw.rstrip(C_SPACE))
