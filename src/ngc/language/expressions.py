@@ -191,6 +191,8 @@ def _sin_30(x: float) -> float | None:
 
 
 def sin_degrees(x: float) -> float:
+    if x == 0.0:
+        return x  # SIN[-0] is -0
     exact = _sin_30(x)
     if exact is not None:
         return exact
@@ -213,6 +215,8 @@ def cos_degrees(x: float) -> float:
 
 
 def _tan(x: float) -> float:
+    if x == 0.0:
+        return x  # TAN[-0] is -0
     if x % 45.0 == 0.0 and x % 90.0 != 0.0 and abs(x) < 1e15:
         return 1.0 if int(x // 45.0) % 4 == 1 else -1.0  # TAN[45] is 1, as rs274 gives it
     r = math.tan(math.radians(x))
