@@ -28,9 +28,7 @@ def check(st: State, r: Words, table: CodeTable) -> None:
     if non_modal == codes.G_MACHINE_COORDINATES:
         _check_g53(st, r, motion)
     if r.others:
-        active = motion
-        if motion is None and r.moves and non_modal not in table.axis_users:
-            active = st.motion  # the modal motion the line's axis words run
+        active = implied_motion(st, r, table) if motion is None else motion
         _check_other_words(r, active, table)
         if "p" in r.w and active in _ARCS:
             _check_turns(r.w["p"])
@@ -40,6 +38,14 @@ def check(st: State, r: Words, table: CodeTable) -> None:
             raise NgcSemanticError(row.missing)
     if non_modal == 100:
         _check_g10(r)
+
+
+def implied_motion(st: State, r: Words, table: CodeTable) -> int | None:
+    """The modal motion a line without a motion code runs: its axis (or I J K) words run it,
+    unless a group-0 code on the line takes the axis words.  None if it runs none."""
+    if codes.G_MOTION in r.g or not r.moves or r.g.get(codes.G_NON_MODAL) in table.axis_users:
+        return None
+    return st.motion
 
 
 def _check_supported(r: Words, table: CodeTable) -> None:

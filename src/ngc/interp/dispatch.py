@@ -17,6 +17,7 @@ from ..errors import NgcSemanticError
 from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
+from .check import implied_motion
 from .handlers import coordinates, modes, motion, program
 from .machine import Machine
 
@@ -97,7 +98,6 @@ HANDLERS: Mapping[str, Handler] = MappingProxyType({
     "stop": lambda m, r, code: program.stop(m, code),
 })
 
-Step = tuple[int, Handler | None]
 _by_step = itemgetter(0)
 
 
@@ -110,10 +110,9 @@ class Dispatcher:
         self.table = table
         self.g = {code: (row.step, _bind(row.handler, handlers)) for code, row in table.g.items()}
         self.m = {code: (row.step, _bind(row.handler, handlers)) for code, row in table.m.items()}
-        self.words = {
-            letter: (step, _bind(name, handlers)) for letter, (step, name) in codes.WORD_STEPS.items()
-            if name is not None
-        }
+        # The words that run (T has no handler yet: the check refuses it).
+        self.words = {letter: (step, handlers[name])
+                      for letter, (step, name) in codes.WORD_STEPS.items() if name is not None}
 
     def convert(self, m: Machine, r: Words) -> None:
         """Run a checked block's steps in the order of execution."""
@@ -132,15 +131,13 @@ class Dispatcher:
         words = self.words
         for letter in r.w:
             if letter in words:
-                step, fn = words[letter]
-                if fn is not None:
-                    calls.append((step, fn, 0))
-        if codes.G_MOTION not in g and r.moves:
-            modal = m.state.motion
-            if modal != codes.G_CANCEL_MOTION and g.get(codes.G_NON_MODAL) not in self.table.axis_users:
-                step, fn = self.g[modal]
-                if fn is not None:
-                    calls.append((step, fn, modal))
+                step, word_fn = words[letter]
+                calls.append((step, word_fn, 0))
+        modal = implied_motion(m.state, r, self.table)
+        if modal is not None and modal != codes.G_CANCEL_MOTION:
+            step, fn = self.g[modal]
+            if fn is not None:
+                calls.append((step, fn, modal))
         calls.sort(key=_by_step)
         for _, fn, code in calls:
             fn(m, r, code)

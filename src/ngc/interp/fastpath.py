@@ -30,7 +30,7 @@ from ..language.parser import PARAM, WORD, Block, n_label, split_plain, words_of
 from ..language.words import Words
 from .handlers import modes, motion, program
 from .machine import Machine
-from .parameters import INI_PREFIX, PREDEFINED, Parameters, check_number_writable, check_writable
+from .parameters import INI_PREFIX, PREDEFINED, Parameters, check_number_writable
 
 # The motion handlers a plain line may run.
 PLAIN_HANDLERS = frozenset({"traverse", "feed", "arc"})
@@ -222,8 +222,7 @@ class FastPath:
             read = []
             for target, value in pairs:
                 if isinstance(target, str):
-                    check_writable(target)
-                    params.declare(target)
+                    params.declare(target)  # read-only names were left to the general path
                 read.append(value if type(value) is float else value(params))  # type: ignore[operator]
             assign = params.assign
             for (target, _), v in zip(pairs, read, strict=True):

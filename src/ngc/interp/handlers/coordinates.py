@@ -178,7 +178,7 @@ def _store_g92(it: Machine) -> None:
 def g92(it: Machine, r: Resolved) -> None:
     """G92: offsets so the current point has the given coordinates."""
     st = it.state
-    for i, v in _offset_words(r):
+    for i, v in _axis_words(r):  # at least one (checked before the line ran)
         st.g92[i] = st.pos[i] + st.g92[i] - v
         st.pos[i] = v
     _offset_changed(it)
@@ -187,17 +187,10 @@ def g92(it: Machine, r: Resolved) -> None:
 def g52(it: Machine, r: Resolved) -> None:
     """G52: local offset given directly (shares G92's offset)."""
     st = it.state
-    for i, v in _offset_words(r):
+    for i, v in _axis_words(r):  # at least one (checked before the line ran)
         st.pos[i] += st.g92[i] - v
         st.g92[i] = v
     _offset_changed(it)
-
-
-def _offset_words(r: Resolved) -> list[tuple[int, float]]:
-    words = _axis_words(r)
-    if not words:
-        raise NgcSemanticError("All axes missing with g52 or g92")
-    return words
 
 
 def _offset_changed(it: Machine) -> None:

@@ -146,13 +146,10 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
         raise NgcSemanticError("F word missing with inverse time arc move")
     if forbidden in w:
         raise NgcSemanticError(f"{forbidden.upper()} word given for arc in {pname} plane")
-    has_ij = letters[0] in w or letters[1] in w
-    if "r" not in w and not has_ij:
-        raise NgcSemanticError("R i j k words all missing for arc")
-    if "r" in w and has_ij:
+    if "r" in w and (letters[0] in w or letters[1] in w):
         raise NgcSemanticError("Mixed radius ijk format for arc")
     _check_arc_feed(it, w)
-    turns = _turns(w.get("p"))
+    turns = int(w.get("p", 1.0))  # a whole number of turns, at least 1 (checked before the line ran)
     start = st.pos
     s1, s2 = start[first], start[second]
     e1, e2 = end[first], end[second]
@@ -172,16 +169,6 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
     it.sink.emit(_new(ops.ArcFeed, (e1, e2, c1, c2, rotation, end[helix], end[3], end[4], end[5])),
                  it.label, it.line)
     st.pos = end
-
-
-def _turns(p: float | None) -> int:
-    if p is None:
-        return 1
-    if p != math.floor(p):
-        raise NgcSemanticError("P value not an integer with M19 G2 or G3")
-    if p < 1:
-        raise NgcSemanticError("P value should be 1 or greater with G2 or G3")
-    return int(p)
 
 
 def _check_arc_feed(it: Machine, w: dict[str, float]) -> None:
