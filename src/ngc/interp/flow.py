@@ -220,7 +220,7 @@ class Flow:
         self.iterations = 0
         # Repeat loops under way: (body, line of the repeat) -> runs left.  A repeat left early
         # (a return inside it) keeps its count: the next run of that line counts on from there.
-        self.active: dict[tuple[int, int], int] = {}
+        self.active: dict[tuple[Body, int], int] = {}
         # A break left a while loop, or a skip passed over a break of a while loop under way: the
         # next do loop's closing while does not loop back (rs274 2.9.0~pre1 does so).
         self.broken_while = False
@@ -361,6 +361,7 @@ class Flow:
         breaks: list[str] = []
         computed = False  # a computed label was passed over: the skip may end otherwise next time
         params = it.machine.params
+        context = params if mode == BRANCH else _Skimming(params)
         number = start
         while True:
             number += 1
@@ -403,19 +404,14 @@ class Flow:
             try:
                 # rs274 computes the label of every o-word it passes over (o[1/0] is an error
                 # there too); a definition or a search reads undefined names as 0.
-                if ow.label is not None:
-                    passed = ow.label
-                else:
-                    computed = True
-                    assert ow.label_expr is not None
-                    context = params if mode == BRANCH else _Skimming(params)
-                    passed = number_label(evaluate(ow.label_expr, context))
+                computed = computed or ow.label is None
+                passed = ow.label_of(context)
                 if mode == DEFINE:
                     if ow.keyword in ("sub", PROGRAM):
                         raise NgcSemanticError("Nested subroutine definition")
                     if ow.keyword not in ("endsub", "return") or passed != label:
                         continue
-                    value = [evaluate(a, _Skimming(params)) for a in ow.args]
+                    value = [evaluate(a, context) for a in ow.args]
                     if ow.keyword == "return":
                         continue
                     st = it.machine.state
@@ -521,7 +517,7 @@ class Flow:
     def _repeat(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
         self.bind(f, block, label, "repeat")
-        key = (id(f.body), block.line)
+        key = (f.body, block.line)
         left = self.active.get(key)
         if left is None:
             left = round(evaluate(ow.args[0], self.interp.machine.params))  # halves to even, as rs274
