@@ -12,7 +12,8 @@ from ..errors import NgcSyntaxError
 
 # C's isspace: what rs274 trims from the end of a line it shows.
 C_SPACE = " \t\n\v\f\r"
-_WHITESPACE_TABLE = str.maketrans("", "", " \t\r\n")
+# The white space a line may hold between its words (removed before reading).
+WHITE_SPACE = str.maketrans("", "", " \t\r\n")
 # rs274 lower-cases ASCII letters only (C tolower); other bytes pass through.
 _ASCII_LOWER = str.maketrans("ABCDEFGHIJKLMNOPQRSTUVWXYZ", "abcdefghijklmnopqrstuvwxyz")
 
@@ -25,7 +26,7 @@ def normalize(raw: str) -> str:
     """Return ``raw`` with white space removed and letters lower-cased outside comments."""
     if "(" not in raw and ";" not in raw:
         if "\t" in raw or "\r" in raw:
-            raw = raw.translate(_WHITESPACE_TABLE)
+            raw = raw.translate(WHITE_SPACE)
         return _lower(raw.replace(" ", ""))
     out: list[str] = []
     i = 0

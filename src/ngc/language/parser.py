@@ -13,7 +13,7 @@ import re
 from ..errors import NgcError, NgcSyntaxError
 from . import expressions as ex
 from .codes import LINUXCNC, POLAR_LETTERS, CodeTable
-from .lexer import C_SPACE, normalize
+from .lexer import C_SPACE, WHITE_SPACE, normalize
 from .oword import (
     CONDITION,
     KEYWORDS,
@@ -42,7 +42,6 @@ _STRTOD = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)")
 _NAME_END = re.compile(r"[^a-z]")
 _OPERATOR_INITIALS = frozenset("aeglmnox")
 _NUMBER_START = frozenset("0123456789.")
-_TAB_CR = str.maketrans("", "", "\t\r\n")
 _OPERATORS = ("**", "*", "/", "+", "-", "mod", "eq", "ne", "gt", "ge", "lt", "le", "and", "or", "xor")
 
 # The largest numbered parameter (overview.adoc, "Numbered Parameters").
@@ -91,8 +90,9 @@ def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool 
             block.delete = True
             text = text[1:]
         if not (fast and _fast(block, text, table)):
-            _Reader(text, block, table).read_line()
-            _resolve_constant(block, table)
+            reader = _Reader(text, block, table)
+            reader.read_line()
+            _resolve_constant(block, reader.read)
     except NgcError as err:
         if err.column is not None:
             err.column = raw_column(raw, err.column - 1)
@@ -161,7 +161,7 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
         return None
     if len(w) != len(letters) or not _FAST_LETTERS.issuperset(w):
         return None
-    if not text.isprintable() and not text.translate(_TAB_CR).isprintable():
+    if not text.isprintable() and not text.translate(WHITE_SPACE).isprintable():
         return None  # float() takes a form feed or \v as white space; rs274 does not
     return w, w.pop("g", None), digits
 
@@ -175,15 +175,13 @@ def words_of(w: dict[str, float], g: float | None, table: CodeTable) -> Words:
     return words.finish()
 
 
-def _resolve_constant(block: Block, table: CodeTable) -> None:
-    """Resolve a block now if nothing on it can change between executions."""
-    words = Words()
+def _resolve_constant(block: Block, words: Words) -> None:
+    """Resolve a block now if nothing on it can change between executions: ``words`` are its
+    constant words, added as the reader read them."""
     for kind, key, value in block.items:
         if kind == PARAM or not isinstance(value, float | None):
             return
-        if kind == WORD:
-            add_word(words, key, value, table)  # type: ignore[arg-type]
-        else:
+        if kind == COMMENT:
             words.comment = key  # type: ignore[assignment]
     block.resolved = words.finish()
 
