@@ -60,14 +60,13 @@ class FastPath:
         self.table = table
         self.execute = execute
         # G word value -> motion code, for the motion codes a plain line may hold.
-        self._motion = {
-            value: code for value, code in table.motion_by_value.items()
-            if table.g[code].handler in PLAIN_HANDLERS
-        }
-        # Motion code -> the letters its plain lines may carry beyond the free ones (a P word
-        # has rules of its own, checked before the line runs: such lines take the general path).
-        self._arcs = {code: table.plain_arcs[code] - {"p"} for code in self._motion.values()
-                      if code in table.plain_arcs}
+        self._motion = {code / 10: code for code, row in table.g.items()
+                        if row.group == G_MOTION and row.handler in PLAIN_HANDLERS}
+        # Motion code -> the letters its plain lines may carry: the free ones and its own (an arc's
+        # I J K R; a P word has rules of its own, checked before the line runs, so such lines
+        # take the general path).
+        self._arcs = {code: FREE_LETTERS | frozenset(row.uses) - {"p"} for code, row in table.g.items()
+                      if code in self._motion.values() and row.uses}
         self._lines: dict[str, tuple[dict[str, float], int | None, str]] = {}
 
     # -- what a plain line is -----------------------------------------------------------------

@@ -280,7 +280,7 @@ FREE_LETTERS = frozenset(AXIS_LETTERS + "fs")
 class CodeTable:
     """A dialect's G and M codes, and what is derived from them once."""
 
-    __slots__ = ("axis_users", "g", "g_by_value", "m", "motion_by_value", "plain_arcs")
+    __slots__ = ("axis_users", "g", "g_by_value", "m")
 
     def __init__(self, g: Mapping[int, Code], m: Mapping[int, Code]) -> None:
         self.g = MappingProxyType(dict(g))
@@ -289,16 +289,6 @@ class CodeTable:
         self.g_by_value: Mapping[float, tuple[int, int]] = MappingProxyType(
             {code / 10: (row.group, code) for code, row in g.items()}
         )
-        # Motion codes that run, by the value of their G word: the codes a plain line may hold.
-        self.motion_by_value: Mapping[float, int] = MappingProxyType({
-            code / 10: code for code, row in g.items()
-            if row.group == G_MOTION and row.handler and code != G_CANCEL_MOTION
-        })
-        # Motion codes whose plain lines may carry their own words (arcs: I J K R P).
-        self.plain_arcs: Mapping[int, frozenset[str]] = MappingProxyType({
-            code: FREE_LETTERS | frozenset(row.uses) for code, row in g.items()
-            if row.group == G_MOTION and row.handler and row.uses
-        })
         self.axis_users = frozenset(code for code, row in g.items() if row.axes)
 
 
