@@ -141,8 +141,10 @@ class FastPath:
         """A plain line: F, S, then the motion (explicit or modal), as the general path runs it."""
         m = self.m
         st = m.state
-        if code is None and st.motion == G_CANCEL_MOTION and not _AXES.isdisjoint(w):
-            raise NgcSemanticError("Cannot use axis values without a g code that uses them")
+        if code is None and not _AXES.isdisjoint(w):
+            code = st.motion  # the modal motion the axis words run (checked before F runs)
+            if code == G_CANCEL_MOTION:
+                raise NgcSemanticError("Cannot use axis values without a g code that uses them")
         if "f" in w:
             f = w["f"]
             if f >= 0.0 and st.feed_mode == 940:
@@ -153,9 +155,7 @@ class FastPath:
         if "s" in w:
             modes.spindle_speed(m, w["s"])
         if code is None:
-            if _AXES.isdisjoint(w):
-                return
-            code = st.motion
+            return
         st.motion = code
         pos = st.pos
         if st.absolute:
