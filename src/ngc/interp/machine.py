@@ -21,9 +21,9 @@ class Machine:
 
     __slots__ = ("ended", "label", "line", "log", "params", "probe_log", "sink", "state")
 
-    def __init__(self, sink: Sink, state: State | None = None) -> None:
+    def __init__(self, sink: Sink) -> None:
         self.sink = sink
-        self.state = State() if state is None else state
+        self.state = State()
         self.params = Parameters(self.state)
         self.params.numbered[COORD_SYSTEM] = 1.0
         self.label = "N..... "  # the running block's N column
