@@ -374,3 +374,13 @@ def test_a_failed_write_is_an_error_at_the_line(cwd: Path) -> None:
         interp.run(["G0 X1", "(LOG,x)", "M2"])
     assert caught.value.message == "LOG: cannot write 'full.txt': No space left on device"
     assert (caught.value.line, caught.value.source) == (2, "(LOG,x)")
+
+
+def test_write_files_false_emits_the_calls_and_writes_nothing(cwd: Path) -> None:
+    sink = ListSink()
+    interp = Interpreter(sink, write_files=False)
+    interp.run(["(LOGOPEN,a.txt)", "(LOG,hello)", "(LOGAPPEND,b.txt)", "(LOGCLOSE)",
+                "(PROBEOPEN c.txt)", "(PROBECLOSE)", "M2"])
+    names = [type(op).__name__ for op, _, _ in sink.ops]
+    assert names[:4] == ["LogOpen", "Log", "LogAppend", "LogClose"]
+    assert os.listdir(cwd) == []

@@ -54,12 +54,14 @@ class Interpreter:
         max_call_depth: int = MAX_CALL_DEPTH,
         table: CodeTable = LINUXCNC,
         fast: bool = True,
+        write_files: bool = True,
     ) -> None:
         """``max_iterations`` bounds the loop iterations of a run (a runaway loop is an error);
         ``max_call_depth`` the subroutine levels below the main program (rs274: 9); ``table`` is
         the dialect's code table; ``fast=False`` sends every line down the general path (the
-        fast path gives the same results; see :mod:`.fastpath`)."""
-        self.machine = m = Machine(sink)
+        fast path gives the same results; see :mod:`.fastpath`); ``write_files=False`` keeps the
+        program's log files (LOGOPEN, PROBEOPEN) from being written."""
+        self.machine = m = Machine(sink, write_files)
         self.sink = sink
         self.state: State = m.state
         self.state.blocks_deleted = block_delete

@@ -19,9 +19,10 @@ if TYPE_CHECKING:
 class Machine:
     """State, parameters, the sink, and the files a program opens (logs)."""
 
-    __slots__ = ("ended", "label", "line", "log", "params", "probe_log", "sink", "state")
+    __slots__ = ("ended", "label", "line", "log", "params", "probe_log", "sink", "state",
+                 "write_files")
 
-    def __init__(self, sink: Sink) -> None:
+    def __init__(self, sink: Sink, write_files: bool = True) -> None:
         self.sink = sink
         self.state = State()
         self.params = Parameters(self.state)
@@ -33,6 +34,9 @@ class Machine:
         self.log: TextIO | None = None
         # The file of (PROBEOPEN ...), until (PROBECLOSE) or the end of the run.
         self.probe_log: TextIO | None = None
+        # False: LOGOPEN, LOGAPPEND and PROBEOPEN emit their calls but open no file (``ngc check``
+        # writes nothing to disk).
+        self.write_files = write_files
 
     def emit(self, op: Op) -> None:
         self.sink.emit(op, self.label, self.line)

@@ -42,6 +42,9 @@ PROBE_LINE = " ".join(["%f"] * 9) + "\n"
 
 def log_open(it: Machine, name: str, append: bool) -> None:
     """``(LOGOPEN,name)`` truncates the file, ``(LOGAPPEND,name)`` appends to it."""
+    if not it.write_files:
+        it.emit(ops.LogAppend(name) if append else ops.LogOpen(name))
+        return
     handle = _open("LOGAPPEND" if append else "LOGOPEN", name, "a" if append else "w")
     if it.log is not None:
         it.log.close()
@@ -73,6 +76,8 @@ def probe_comment(it: Machine, text: str) -> None:
     if m.group(1).lower() == "close":
         if not rest:
             _close_probe_log(it)
+        return
+    if not it.write_files:
         return
     handle = _open("PROBEOPEN", rest, "w")
     _close_probe_log(it)
