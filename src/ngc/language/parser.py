@@ -75,11 +75,17 @@ class Block:
         self.resolved: Words | None = None
 
 
-def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool = True) -> Block:
+def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool = True,
+               eager: ex.ParamContext | None = None) -> Block:
     """Parse one source line (without its newline) into a :class:`Block`.
 
     ``table`` is the dialect's code table (unknown codes and modal clashes are read errors);
     ``fast`` lets a line of plain words with literal numbers take :func:`split_plain`.
+
+    ``eager`` reads the line as rs274 does, evaluating each value against those parameters as it
+    is read: an error in a value (``X[1/0]``) comes before a read error further on (``G0 G1``).
+    The interpreter reads a line so only when the line has a read error, to know which comes
+    first; the block it returns is of no other use.
 
     >>> b = parse_line("N10 G1 X1.5 Y[2*3] (cut)")
     >>> b.label, [(k, key) for k, key, _ in b.items]
@@ -93,7 +99,8 @@ def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool 
             block.delete = True
             text = text[1:]
         if not (fast and _fast(block, text, table)):
-            reader = _Reader(text, block, table)
+            reader = _Reader(text, block, table) if eager is None else _EagerReader(
+                text, block, table, eager)
             reader.read_line()
             _resolve_constant(block, reader.read)
     except NgcError as err:
@@ -307,13 +314,13 @@ class _Reader:
         if keyword in CONDITION:
             if not s.startswith("[", self.i):
                 raise self.error(f"Left bracket missing after '{keyword}'")
-            oword.args.append(self.read_expression())
+            oword.args.append(self.now(self.read_expression()))
         elif keyword == "call" or keyword in OPTIONAL_VALUE:
             while True:
                 self.skip_comments()
                 if not s.startswith("[", self.i) or (keyword != "call" and oword.args):
                     break
-                oword.args.append(self.read_expression())
+                oword.args.append(self.now(self.read_expression()))
         self.skip_comments()
         if self.i < len(s) and s[self.i] != ";":
             raise self.error("Unexpected character after O-word")
@@ -336,6 +343,7 @@ class _Reader:
         target: object
         if self.s.startswith("<", self.i):
             target = self.read_name()
+            self.declare(target)
         else:
             target = self.read_index()
             if target in READ_ONLY_PARAMETERS:
@@ -346,6 +354,13 @@ class _Reader:
         return (PARAM, target, self.read_value())
 
     # -- values -------------------------------------------------------------------------------
+    def now(self, value: ex.Value) -> ex.Value:
+        """A value rs274 has computed at this point of the line (see :class:`_EagerReader`)."""
+        return value
+
+    def declare(self, name: str) -> None:
+        """A named parameter's setting has been read (see :class:`_EagerReader`)."""
+
     def read_value(self) -> ex.Value:
         """A real value: number, ``[expression]``, ``#parameter``, function call, signed value."""
         s = self.s
@@ -410,7 +425,7 @@ class _Reader:
             level = precedence[op]
             while pending and precedence[pending[-1]] >= level:
                 right = values.pop()
-                values[-1] = ex.fold_binary(pending.pop(), values[-1], right)
+                values[-1] = self.now(ex.fold_binary(pending.pop(), values[-1], right))
             pending.append(op)
             values.append(self.read_value())
         while pending:
@@ -510,6 +525,27 @@ class _Reader:
             raise ex.nonfinite(v)
 
         return computed
+
+
+class _EagerReader(_Reader):
+    """Reads a line computing each value as it is read, in rs274's order (see :func:`parse_line`)."""
+
+    __slots__ = ("params",)
+
+    def __init__(self, text: str, block: Block, table: CodeTable, params: ex.ParamContext) -> None:
+        super().__init__(text, block, table)
+        self.params = params
+
+    def now(self, value: ex.Value) -> ex.Value:
+        return value if type(value) is float else value(self.params)  # type: ignore[operator]
+
+    def declare(self, name: str) -> None:
+        declare = getattr(self.params, "declare", None)
+        if declare is not None:
+            declare(name)  # from here on the name reads 0 (rs274)
+
+    def read_value(self) -> ex.Value:
+        return self.now(super().read_value())
 
 
 _FUNCTIONS = (
