@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import io
+import time
 from pathlib import Path
 
 import pytest
@@ -24,7 +25,7 @@ def test_runaway_while_ends_with_an_error_at_its_line() -> None:
     with pytest.raises(NgcRuntimeError) as caught:
         run("G0 X1\no100 while [1]\n  G0 X2\no100 endwhile\nM2\n", max_iterations=500)
     err = caught.value
-    assert "Loop iteration limit (500) reached" in err.message
+    assert "Work limit reached: 500 loop iterations and subroutine calls" in err.message
     assert (err.file, err.line, err.source) == ("t.ngc", 4, "o100 endwhile")
 
 
@@ -38,8 +39,36 @@ def test_runaway_while_ends_with_an_error_at_its_line() -> None:
     ],
 )
 def test_every_kind_of_loop_is_bounded(program: str) -> None:
-    with pytest.raises(NgcRuntimeError, match="Loop iteration limit"):
+    with pytest.raises(NgcRuntimeError, match="Work limit reached"):
         run(program, max_iterations=100)
+
+
+# A subroutine that calls itself ten times per level: about 10**8 calls at nine levels.
+FAN_OUT = (
+    "o100 sub\n"
+    "o101 if [#1 LT 8]\n"
+    + "o100 call [#1+1]\n" * 10
+    + "o101 endif\n"
+    "o100 endsub\n"
+    "o100 call [0]\n"
+    "M2\n"
+)
+
+
+def test_subroutine_calls_count_against_the_work_budget() -> None:
+    started = time.monotonic()
+    with pytest.raises(NgcRuntimeError, match="Work limit reached: 1000 loop") as caught:
+        run(FAN_OUT, max_iterations=1000)
+    assert time.monotonic() - started < 2.0
+    assert caught.value.source == "o100 call [#1+1]"
+
+
+def test_calls_within_the_budget_run() -> None:
+    # One call, then ten at the next level: 11 calls, one if per call.
+    interp = run(FAN_OUT.replace("LT 8", "LT 1"), max_iterations=11)
+    assert interp.ended
+    with pytest.raises(NgcRuntimeError, match="Work limit reached: 10 loop"):
+        run(FAN_OUT.replace("LT 8", "LT 1"), max_iterations=10)
 
 
 def test_a_loop_within_the_bound_runs_to_the_end() -> None:
@@ -54,8 +83,8 @@ def test_rs274_command_line_bound(tmp_path: Path, monkeypatch: pytest.MonkeyPatc
     rc = rs274.run(["-g", "--max-iterations", "50", "r.ngc"], stdout=out, stderr=err)
     assert rc == 1
     assert err.getvalue().splitlines()[1:] == [
-        "Loop iteration limit (50) reached: the program looks like it runs forever "
-        "(raise the limit with --max-iterations)",
+        "Work limit reached: 50 loop iterations and subroutine calls; the program looks like it "
+        "runs forever (raise the limit with --max-iterations)",
         "o100 endwhile",
     ]
 

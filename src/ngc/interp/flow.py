@@ -70,8 +70,10 @@ class Host(Protocol):
     def finish_percent(self) -> None: ...
 # Call levels rs274 allows below the main program.
 MAX_CALL_DEPTH = 9
-# Safety bound on the loop iterations of one run (endwhile, endrepeat, do-while, continue and
-# M98 L repeats): an endless ``o100 while [1]`` ends with an error instead of running forever.
+# The work budget of one run: loop iterations (endwhile, endrepeat, do-while, continue, M98 L
+# repeats) and subroutine calls (o-word call, M98) count against it, so an endless
+# ``o100 while [1]`` or a subroutine that calls itself many times per level ends with an error
+# instead of running (practically) forever.
 DEFAULT_MAX_ITERATIONS = 10_000_000
 ARGUMENT_PARAMETERS = 30
 _LOOPS = ("while", "do")
@@ -328,12 +330,12 @@ class Flow:
             raise err.locate(file=f.body.file, line=block.line, source=block.source) from None
 
     def again(self) -> None:
-        """One more loop iteration; past the bound the program is stopped as a runaway."""
+        """One more loop iteration or call; past the budget the program is stopped as a runaway."""
         self.iterations += 1
         if self.iterations > self.max_iterations:
             raise NgcRuntimeError(
-                f"Loop iteration limit ({self.max_iterations}) reached: the program looks like "
-                "it runs forever (raise the limit with --max-iterations)")
+                f"Work limit reached: {self.max_iterations} loop iterations and subroutine calls; "
+                "the program looks like it runs forever (raise the limit with --max-iterations)")
 
     def label(self, ow: OWord) -> str:
         return ow.label_of(self.interp.machine.params)
@@ -639,6 +641,7 @@ class Flow:
     def push(self, frame: Frame) -> None:
         if len(self.frames) > self.max_call_depth:
             raise NgcRuntimeError("Too many subroutine levels")
+        self.again()
         self.frames.append(frame)
         self.interp.machine.state.call_level = len(self.frames) - 1
 

@@ -56,7 +56,8 @@ class Interpreter:
         fast: bool = True,
         write_files: bool = True,
     ) -> None:
-        """``max_iterations`` bounds the loop iterations of a run (a runaway loop is an error);
+        """``max_iterations`` is the work budget of a run: loop iterations and subroutine calls
+        (a runaway program is an error);
         ``max_call_depth`` the subroutine levels below the main program (rs274: 9); ``table`` is
         the dialect's code table; ``fast=False`` sends every line down the general path (the
         fast path gives the same results; see :mod:`.fastpath`); ``write_files=False`` keeps the
