@@ -10,7 +10,7 @@ import pytest
 
 from ngc import rs274
 from ngc.canon.jsonl import ListSink
-from ngc.errors import NgcRuntimeError
+from ngc.errors import NgcRuntimeError, NgcSemanticError
 from ngc.interp.interpreter import Interpreter
 
 
@@ -132,3 +132,26 @@ def test_loop_body_is_parsed_once(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(interpreter, "parse_line", counting)
     run("#1=0\no1 while [#1 LT 50]\nG1 X[#1] F100\n#1=[#1+1]\no1 endwhile\nM2\n")
     assert len(calls) == len(set(calls))  # every line parsed at most once
+
+
+@pytest.mark.parametrize(
+    "name", ["../elsewhere/evil", "/ABS/elsewhere/evil", "sub/../../elsewhere/evil"])
+def test_subroutine_names_stay_inside_the_working_directory(
+        name: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    (tmp_path / "work").mkdir()
+    (tmp_path / "elsewhere").mkdir()
+    (tmp_path / "elsewhere" / "evil.ngc").write_text("o<evil> sub\n(debug,ran)\no<evil> endsub\n")
+    monkeypatch.chdir(tmp_path / "work")
+    name = name.replace("/ABS", str(tmp_path))
+    with pytest.raises(NgcSemanticError, match="outside the working directory") as caught:
+        run(f"o<{name}> call\nM2\n")
+    assert caught.value.line == 1
+
+
+def test_a_subroutine_name_may_name_a_folder_inside(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    (tmp_path / "lib").mkdir()
+    (tmp_path / "lib" / "part.ngc").write_text("o<lib/part> sub\nG0 X7\no<lib/part> endsub\n")
+    monkeypatch.chdir(tmp_path)
+    interp = run("o<lib/part> call\nM2\n")
+    assert interp.state.pos[0] == 7.0

@@ -663,8 +663,16 @@ class Flow:
         return sub
 
     def sub_file(self, label: str) -> str | None:
-        """``<label>.ngc`` in the working directory or a folder of the subroutine path."""
+        """``<label>.ngc`` in the working directory or a folder of the subroutine path.
+
+        A name is a path inside those folders: one that is absolute or climbs out of them
+        (``o<../x> call``) is refused, so program text reads no file elsewhere.
+        """
         name = label + ".ngc"
+        if os.path.isabs(name) or os.path.normpath(name).split(os.sep)[0] == os.pardir:
+            raise NgcSemanticError(
+                f"Subroutine file '{name}' is outside the working directory and the subroutine "
+                "path")
         for folder in (".", *self.subroutine_path):
             path = name if folder == "." else os.path.join(folder, name)
             if os.path.isfile(path):
