@@ -32,9 +32,6 @@ import hostile
 
 TIME_LIMIT_S = 2.0
 CORPUS = hostile.golden_corpus()
-# Remove the marks that use it once an infinite or NaN value stops a program with rs274's message
-# everywhere (issue 8): today such values reach int() and math functions, which raise.
-NON_FINITE = "infinity/NaN reaches int() or a math function (issue 8, being fixed)"
 
 BOUNDED = settings(
     deadline=None,
@@ -100,14 +97,12 @@ def test_random_bytes(data: bytes, decoding: str, feed: str, workdir: Path) -> N
     ends_cleanly(data, decoding, feed, workdir)
 
 
-@pytest.mark.xfail(strict=False, reason=NON_FINITE)
 @settings(BOUNDED, max_examples=1500)
 @given(data=token_soup, decoding=decodings, feed=feeds)
 def test_token_soup(data: bytes, decoding: str, feed: str, workdir: Path) -> None:
     ends_cleanly(data, decoding, feed, workdir)
 
 
-@pytest.mark.xfail(strict=False, reason=NON_FINITE)
 @settings(BOUNDED, max_examples=1000)
 @given(data=mutated_golden(), decoding=decodings, feed=feeds)
 def test_mutated_golden(data: bytes, decoding: str, feed: str, workdir: Path) -> None:

@@ -73,9 +73,10 @@ def _g_word(words: Words, v: float, table: CodeTable) -> None:
     if hit is not None:
         _set_g(words.g, *hit)
         return
-    if v < 0.0:
-        raise NgcSyntaxError("Negative g code used")
     tenths = v * 10.0
+    # rs274 reads the code through a C int: past its range (or infinite) it is INT_MIN, negative.
+    if v < 0.0 or not tenths < 2147483647.5:
+        raise NgcSyntaxError("Negative g code used")
     code = round(tenths)
     if abs(tenths - code) > 0.001 or code > 999:
         raise NgcSyntaxError("G-code out of range")
@@ -99,7 +100,7 @@ def _set_g(g: dict[int, int], group: int, code: int) -> None:
 
 def _m_word(words: Words, v: float, table: CodeTable) -> None:
     code = integer_value(v)
-    if code < 0:
+    if code < 0 or code > 2147483647:  # through a C int, a code past its range is negative
         raise NgcSyntaxError("Negative m code used")
     if code > M_USER_LIMIT:
         raise NgcSemanticError(f"M-code greater than {M_USER_LIMIT}: M{code}")
