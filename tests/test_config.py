@@ -7,6 +7,7 @@ settings through their effect on the canon output); each table says so once.
 
 from __future__ import annotations
 
+import io
 import math
 import os
 import re
@@ -15,6 +16,8 @@ from pathlib import Path
 
 import pytest
 
+from ngc import rs274
+from ngc.config import ini as ini_module
 from ngc.config.ini import (
     AMBIGUOUS_CR_ERROR,
     CENTER_ARC_RADIUS_TOLERANCE_INCH,
@@ -137,6 +140,49 @@ def test_read_missing_unreadable_and_directory(tmp_path: Path) -> None:
     path.write_bytes(b"[S]\r\nA = 1\r\n")
     ini = Ini.read(path)
     assert ini.get("S", "A") == "1" and ini.path == str(path) and ini.dos_line_endings
+
+
+@pytest.fixture
+def fifo(tmp_path: Path) -> Path:
+    path = tmp_path / "f.ini"
+    os.mkfifo(path)
+    return path
+
+
+@pytest.mark.parametrize("kind", ["fifo", "link-to-fifo", "/dev/null", "/dev/zero"])
+def test_read_refuses_fifos_and_devices_without_blocking(fifo: Path, kind: str) -> None:
+    name = {"fifo": str(fifo), "link-to-fifo": str(fifo.parent / "l.ini")}.get(kind, kind)
+    if kind == "link-to-fifo":
+        os.symlink(fifo, name)
+    with pytest.raises(NgcConfigError) as caught:
+        Ini.read(name)
+    assert caught.value.message == f"Unable to open inifile:{name}:"
+    assert caught.value.file == name
+
+
+def test_read_checks_what_it_opened(fifo: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # A FIFO put in place after the first look is opened without blocking, then refused.
+    def missing(path: object) -> os.stat_result:
+        raise FileNotFoundError(2, "No such file or directory")
+
+    monkeypatch.setattr(ini_module.os, "stat", missing)
+    with pytest.raises(NgcConfigError) as caught:
+        Ini.read(fifo)
+    assert caught.value.message == f"Unable to open inifile:{fifo}:"
+
+
+def test_rs274_reports_a_fifo_ini_file_and_runs_without_it(
+    fifo: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # As for an INI file rs274 cannot open: the message after "executing", then the run, rc 0.
+    monkeypatch.chdir(fifo.parent)
+    Path("p.ngc").write_text("G0 X1\nM2\n")
+    out, err = io.StringIO(), io.StringIO()
+    assert rs274.run(["-i", "f.ini", "-g", "p.ngc"], stdout=out, stderr=err) == 0
+    assert err.getvalue() == "executing\nUnable to open inifile:f.ini:\n"
+    plain = io.StringIO()
+    assert rs274.run(["-g", "p.ngc"], stdout=plain, stderr=io.StringIO()) == 0
+    assert out.getvalue() == plain.getvalue()
 
 
 # -- numbers -------------------------------------------------------------------------------------

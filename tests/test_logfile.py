@@ -384,3 +384,123 @@ def test_write_files_false_emits_the_calls_and_writes_nothing(cwd: Path) -> None
     names = [type(op).__name__ for op, _, _ in sink.ops]
     assert names[:4] == ["LogOpen", "Log", "LogAppend", "LogClose"]
     assert os.listdir(cwd) == []
+
+
+# -- only regular files with one link -------------------------------------------------------------
+COMMANDS = ["LOGOPEN,", "LOGAPPEND,", "PROBEOPEN "]
+
+
+def refused(command: str, name: str, why: str) -> tuple[int, str]:
+    """What a refused file prints: exit 1 and ``KEYWORD: 'name' why`` at the line."""
+    source = f"({command}{name})"
+    return 1, f"executing\n{command[:-1]}: '{name}' {why}\n{source}\n"
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_a_fifo_is_refused_without_blocking(cwd: Path, command: str) -> None:
+    os.mkfifo(cwd / "fifo")
+    code, _, err = run(f"({command}fifo)\nM2\n")
+    assert (code, err) == refused(command, "fifo", "is not a regular file")
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_a_fifo_with_a_reader_is_refused_and_gets_nothing(cwd: Path, command: str) -> None:
+    os.mkfifo(cwd / "fifo")
+    reader = os.open(cwd / "fifo", os.O_RDONLY | os.O_NONBLOCK)
+    try:
+        code, _, err = run(f"({command}fifo)\n(LOG,x)\nM2\n")
+        assert (code, err) == refused(command, "fifo", "is not a regular file")
+        assert os.read(reader, 10) == b""  # end of file: nothing written, no writer left
+    finally:
+        os.close(reader)
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_a_device_is_refused(monkeypatch: pytest.MonkeyPatch, command: str) -> None:
+    monkeypatch.chdir("/dev")  # a program there may name the device null
+    interp = Interpreter(ListSink())
+    with pytest.raises(NgcRuntimeError) as caught:
+        interp.execute_line(f"({command}null)", 1)
+    assert caught.value.message == f"{command[:-1]}: 'null' is not a regular file"
+    assert (interp.machine.log, interp.machine.probe_log) == (None, None)
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_a_hard_link_to_a_file_outside_is_refused_and_left_alone(cwd: Path, command: str) -> None:
+    outside = cwd.parent / "outside" / "f"
+    outside.write_bytes(b"precious\n")
+    os.link(outside, cwd / "x")
+    code, _, err = run(f"({command}x)\n(LOG,overwrite)\nM2\n")
+    assert (code, err) == refused(command, "x", "has other hard links")
+    assert outside.read_bytes() == b"precious\n"
+    assert os.stat(outside).st_nlink == 2
+
+
+def test_a_hard_link_inside_is_refused_too(cwd: Path) -> None:
+    (cwd / "a").write_bytes(b"old\n")
+    os.link(cwd / "a", cwd / "b")
+    code, _, err = run("(LOGOPEN,b)\nM2\n")
+    assert (code, err) == refused("LOGOPEN,", "b", "has other hard links")
+    assert (cwd / "a").read_bytes() == b"old\n"
+
+
+def test_a_file_whose_other_link_is_gone_is_written(cwd: Path) -> None:
+    (cwd / "a").write_bytes(b"old\n")
+    os.link(cwd / "a", cwd / "b")
+    os.unlink(cwd / "a")
+    code, _, err = run("(LOGAPPEND,b)\n(LOG,new)\nM2\n")
+    assert (code, err) == (0, "executing\n")
+    assert (cwd / "b").read_bytes() == b"old\nnew\n"
+
+
+@pytest.fixture
+def blind_lstat(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The name changes between the first look and the open: only the open descriptor tells."""
+
+    def missing(path: object) -> os.stat_result:
+        raise FileNotFoundError(2, "No such file or directory")
+
+    monkeypatch.setattr(logfile.os, "lstat", missing)
+
+
+@pytest.mark.parametrize("command", ["LOGOPEN", "LOGAPPEND", "PROBEOPEN"])
+def test_what_is_opened_is_checked_again(cwd: Path, blind_lstat: None, command: str) -> None:
+    os.mkfifo(cwd / "fifo")
+    os.symlink(cwd / "target", cwd / "link")
+    (cwd / "a").write_bytes(b"old\n")
+    os.link(cwd / "a", cwd / "b")
+    reader = os.open(cwd / "fifo", os.O_RDONLY | os.O_NONBLOCK)
+    try:
+        for name, why in [("fifo", "is not a regular file"), ("b", "has other hard links")]:
+            with pytest.raises(NgcRuntimeError) as caught:
+                logfile.open_log(command, name, str(cwd / name), append=False)
+            assert caught.value.message == f"{command}: '{name}' {why}"
+    finally:
+        os.close(reader)
+    for name in ["fifo", "link"]:  # a FIFO without a reader, a symbolic link put in since
+        with pytest.raises(NgcRuntimeError) as caught:
+            logfile.open_log(command, name, str(cwd / name), append=True)
+        assert caught.value.message == f"{command}: '{name}' is not a regular file"
+    assert (cwd / "a").read_bytes() == b"old\n"
+    assert not (cwd / "target").exists()
+
+
+def test_a_file_that_cannot_be_truncated_is_an_error(cwd: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    (cwd / "a.txt").write_bytes(b"old\n")
+
+    def refuse(fd: int, length: int) -> None:
+        raise PermissionError(1, "Operation not permitted")
+
+    monkeypatch.setattr(logfile.os, "ftruncate", refuse)
+    code, _, err = run("(LOGOPEN,a.txt)\nM2\n")
+    assert (code, err) == (
+        1, "executing\nLOGOPEN: cannot open 'a.txt': Operation not permitted\n(LOGOPEN,a.txt)\n"
+    )
+    assert (cwd / "a.txt").read_bytes() == b"old\n"
+
+
+def test_write_files_false_opens_no_fifo(cwd: Path) -> None:
+    os.mkfifo(cwd / "fifo")
+    interp = Interpreter(ListSink(), write_files=False)
+    interp.run(["(LOGOPEN,fifo)", "(LOGAPPEND,fifo)", "(PROBEOPEN fifo)", "M2"])
+    assert (interp.machine.log, interp.machine.probe_log) == (None, None)

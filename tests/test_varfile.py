@@ -6,9 +6,11 @@ under ``golden/varfiles/`` hold files it wrote (``record.py`` there re-records o
 
 from __future__ import annotations
 
+import io
 import os
 import shutil
 import signal
+import stat
 import subprocess
 import sys
 import textwrap
@@ -16,6 +18,7 @@ from pathlib import Path
 
 import pytest
 
+from ngc import rs274
 from ngc.config import varfile
 from ngc.config.varfile import (
     REQUIRED_PARAMETERS,
@@ -328,6 +331,8 @@ KILLED_WRITER = textwrap.dedent(
     import os, signal, sys
     from ngc.config import varfile
 
+    if sys.argv[2] == "named":
+        del os.O_TMPFILE
     real_write = os.write
 
     def write_half_then_die(fd, data):
@@ -341,19 +346,242 @@ KILLED_WRITER = textwrap.dedent(
 )
 
 
-def test_killed_mid_write_leaves_the_old_file_whole(tmp_path: Path) -> None:
-    target = tmp_path / "big.var"
+def killed_mid_write(target: Path, kind: str) -> list[Path]:
+    """Kill a process writing ``target`` half-way; the old file is whole; what else is left."""
     original = format_var_file([float(n) for n in range(5602)], range(1, 5602))
     target.write_bytes(original)
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
     done = subprocess.run(
-        [sys.executable, "-c", KILLED_WRITER, str(target)], env=env, capture_output=True, check=False
+        [sys.executable, "-c", KILLED_WRITER, str(target), kind], env=env, capture_output=True,
+        check=False,
     )
     assert done.returncode == -signal.SIGKILL, done.stderr
     assert target.read_bytes() == original
-    leftovers = [p for p in tmp_path.iterdir() if p != target]
-    # The child died inside the temporary file: it holds part of the new content, nothing else moved.
+    return [p for p in target.parent.iterdir() if p != target]
+
+
+@pytest.mark.skipif(not hasattr(os, "O_TMPFILE"), reason="needs unnamed files (O_TMPFILE)")
+def test_killed_mid_write_leaves_the_old_file_whole_and_nothing_else(tmp_path: Path) -> None:
+    assert killed_mid_write(tmp_path / "big.var", "unnamed") == []
+
+
+def test_killed_mid_write_of_a_named_temporary_file(tmp_path: Path) -> None:
+    # Without unnamed files, only SIGKILL (which nothing can catch) leaves the temporary file.
+    leftovers = killed_mid_write(tmp_path / "big.var", "named")
     assert len(leftovers) == 1 and leftovers[0].name.startswith("big.var.")
     assert leftovers[0].name.endswith(".new")
     partial = leftovers[0].read_bytes()
-    assert 0 < len(partial) < len(original) and partial.startswith(b"1\t1.500000\n")
+    assert 0 < len(partial) < 100000 and partial.startswith(b"1\t1.500000\n")
+
+
+# -- files that are not regular files ------------------------------------------------------------
+
+
+@pytest.fixture
+def fifo(tmp_path: Path) -> Path:
+    path = tmp_path / "f.var"
+    os.mkfifo(path)
+    return path
+
+
+@pytest.fixture
+def device(tmp_path: Path) -> Path:
+    """A null device node of our own (creating one needs privileges) to write over, safely."""
+    path = tmp_path / "null.var"
+    try:
+        os.mknod(path, 0o666 | stat.S_IFCHR, os.makedev(1, 3))
+    except PermissionError:
+        pytest.skip("creating a device node needs privileges")
+    return path
+
+
+def unable_to_open(path: Path | str) -> str:
+    return f"Unable to open parameter file: '{path}'"
+
+
+@pytest.mark.parametrize("path", ["fifo", "/dev/null", "/dev/zero", "link-to-fifo"])
+def test_reading_refuses_fifos_and_devices_without_blocking(fifo: Path, path: str) -> None:
+    if path == "fifo":
+        name = str(fifo)
+    elif path == "link-to-fifo":
+        name = str(fifo.parent / "l.var")
+        os.symlink(fifo, name)
+    else:
+        name = path
+    with pytest.raises(NgcConfigError) as caught:
+        read_var_file(name)
+    assert (caught.value.message, caught.value.source, caught.value.file) == (
+        unable_to_open(name), "", name
+    )
+
+
+def test_what_is_opened_is_checked_again(fifo: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # A FIFO put in place after the first look: opened without blocking, then refused.
+    monkeypatch.setattr(varfile, "_not_regular", lambda name: False)
+    with pytest.raises(NgcConfigError) as caught:
+        read_var_file(fifo)
+    assert caught.value.message == unable_to_open(fifo)
+
+
+def test_a_symbolic_link_to_a_regular_file_is_read_and_replaced_like_rs274(tmp_path: Path) -> None:
+    target = tmp_path / "real.var"
+    target.write_bytes(b"31 2\n")
+    link = tmp_path / "l.var"
+    os.symlink(target, link)
+    values = read_var_file(link)
+    assert values == {31: 2.0}
+    assert write_var_file(link, numbered_from(values)) == []
+    assert not link.is_symlink() and read_var_file(link)[31] == 2.0
+    assert target.read_bytes() == b"31 2\n"
+    assert (tmp_path / "l.var.bak").is_symlink()
+
+
+@pytest.mark.parametrize("kind", ["fifo", "device", "link-to-fifo"])
+def test_a_save_never_replaces_a_fifo_or_a_device(
+    kind: str, tmp_path: Path, request: pytest.FixtureRequest
+) -> None:
+    if kind == "link-to-fifo":
+        path = tmp_path / "l.var"
+        os.symlink(request.getfixturevalue("fifo"), path)
+    else:
+        path = request.getfixturevalue(kind)
+    before = sorted(p.name for p in tmp_path.iterdir())
+    mode = os.stat(path).st_mode
+    assert write_var_file(path, numbered_from({})) == [
+        f"Unable to save parameter file: '{path}' is not a regular file"
+    ]
+    assert write_var_file(path, numbered_from({}), [31], backup=False) == [
+        varfile.NOT_REGULAR.format(path)
+    ]
+    assert os.stat(path).st_mode == mode
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+
+
+@pytest.mark.parametrize("unnamed", [True, False], ids=["unnamed", "named"])
+def test_a_fifo_put_in_place_during_the_save_is_not_replaced(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, unnamed: bool
+) -> None:
+    if not unnamed:
+        monkeypatch.delattr(os, "O_TMPFILE", raising=False)
+    path = tmp_path / "b.var"
+    path.write_bytes(b"5161 1\n")
+    real = varfile._write_temp
+
+    def swap(name: str, data: bytes, permissions: int | None) -> str | None:
+        temp = real(name, data, permissions)
+        os.unlink(path)
+        os.mkfifo(path)
+        return temp
+
+    monkeypatch.setattr(varfile, "_write_temp", swap)
+    assert write_var_file(path, numbered_from({})) == [varfile.NOT_REGULAR.format(path)]
+    assert stat.S_ISFIFO(os.lstat(path).st_mode)
+    assert [p.name for p in tmp_path.iterdir()] == ["b.var"]
+
+
+def rs274_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, *args: str) -> tuple[int, str, str]:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "p.ngc").write_text("#31=5\nG0 X1\nM2\n")
+    out, err = io.StringIO(), io.StringIO()
+    code = rs274.run([*args, "-g", "p.ngc"], stdout=out, stderr=err)
+    return code, out.getvalue(), err.getvalue()
+
+
+@pytest.mark.parametrize("name", ["f.var", "/dev/null"])
+def test_rs274_refuses_a_fifo_or_device_before_the_program(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, name: str
+) -> None:
+    # As for a var file rs274 cannot open: only USE_LENGTH_UNITS, the message, an empty line, rc 1.
+    os.mkfifo(tmp_path / "f.var")
+    code, out, err = rs274_run(tmp_path, monkeypatch, "-v", name)
+    assert (code, err) == (1, f"executing\n{unable_to_open(name)}\n\n")
+    assert out == "    1 N..... USE_LENGTH_UNITS(CANON_UNITS_MM)\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["f.var", "p.ngc"]
+    assert stat.S_ISFIFO(os.lstat(tmp_path / "f.var").st_mode)
+
+
+# -- permission bits -----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("mode", [0o444, 0o600, 0o640, 0o755])
+@pytest.mark.parametrize("unnamed", [True, False], ids=["unnamed", "named"])
+def test_a_save_keeps_the_permission_bits(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, mode: int, unnamed: bool
+) -> None:
+    if not unnamed:
+        monkeypatch.delattr(os, "O_TMPFILE", raising=False)
+    path = tmp_path / "b.var"
+    path.write_bytes(b"31 1\n")
+    path.chmod(mode)
+    code, _, err = rs274_run(tmp_path, monkeypatch, "-v", "b.var")
+    assert (code, err) == (0, "executing\n")
+    assert stat.S_IMODE(os.stat(path).st_mode) == mode
+    assert read_var_file(path)[31] == 5.0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["b.var", "b.var.bak", "p.ngc"]
+
+
+@pytest.mark.parametrize("unnamed", [True, False], ids=["unnamed", "named"])
+def test_a_new_file_gets_0666_less_the_umask_like_rs274(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, unnamed: bool
+) -> None:
+    if not unnamed:
+        monkeypatch.delattr(os, "O_TMPFILE", raising=False)
+    old = os.umask(0o027)
+    try:
+        write_var_file(tmp_path / "n.var", numbered_from({}))
+    finally:
+        os.umask(old)
+    assert stat.S_IMODE(os.stat(tmp_path / "n.var").st_mode) == 0o640
+
+
+# -- no temporary file outlives a save -----------------------------------------------------------
+
+
+def test_without_unnamed_files_a_named_one_is_written(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.delattr(os, "O_TMPFILE", raising=False)
+    test_two_saves_leave_rs274s_file_and_backup(UNCHANGED[0], tmp_path)
+
+
+def test_when_an_unnamed_file_cannot_be_linked_a_named_one_is_written(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    real_link = os.link
+
+    def no_proc(src: str, dst: str, **kwargs: object) -> None:
+        if src.startswith("/proc/"):
+            raise FileNotFoundError(2, "No such file or directory")
+        real_link(src, dst, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(varfile.os, "link", no_proc)
+    test_two_saves_leave_rs274s_file_and_backup(UNCHANGED[0], tmp_path)
+
+
+@pytest.mark.parametrize("unnamed", [True, False], ids=["unnamed", "named"])
+def test_a_failed_write_leaves_no_temporary_file(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, unnamed: bool
+) -> None:
+    if not unnamed:
+        monkeypatch.delattr(os, "O_TMPFILE", raising=False)
+    test_failed_write_keeps_the_old_file(tmp_path, monkeypatch)
+
+
+@pytest.mark.parametrize("unnamed", [True, False], ids=["unnamed", "named"])
+@pytest.mark.parametrize("where", ["write", "replace"])
+def test_an_interrupted_save_leaves_no_temporary_file(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, unnamed: bool, where: str
+) -> None:
+    if not unnamed:
+        monkeypatch.delattr(os, "O_TMPFILE", raising=False)
+    target = tmp_path / "b.var"
+    target.write_bytes(b"5161 1\n")
+
+    def interrupt(*args: object) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(varfile.os, "fsync" if where == "write" else "replace", interrupt)
+    with pytest.raises(KeyboardInterrupt):
+        write_var_file(target, numbered_from({}))
+    assert target.read_bytes() == b"5161 1\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["b.var"] if where == "write" else ["b.var", "b.var.bak"]

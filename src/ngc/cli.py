@@ -9,6 +9,7 @@ Exit codes (one policy for every subcommand, see :func:`main`):
 70  internal error: a bug in ngc (``ngc: internal error: ...``, never a traceback)
 130 interrupted (Ctrl-C)
 141 stdout was closed early (``ngc canon big.ngc | head``)
+143 terminated by SIGTERM (129: SIGHUP), after the normal cleanup
 ==  ==============================================================================
 
 ``ngc rs274`` keeps the exit codes of LinuxCNC's ``rs274``; its arguments go to
@@ -33,6 +34,7 @@ from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
 from .options import MachineOptions, Setup, load_setup, new_interpreter, parse_positive
 from .progress import Progress, descriptor, is_terminal
+from .termination import Terminated, signals_raise
 
 EXIT_OK = 0
 EXIT_PROGRAM_ERROR = 1
@@ -54,13 +56,16 @@ def main(argv: list[str] | None = None) -> int:
     """
     args = sys.argv[1:] if argv is None else argv
     try:
-        code = dispatch(args)
+        with signals_raise():
+            code = dispatch(args)
         sys.stdout.flush()
     except NgcError as exc:
         sys.stderr.write(exc.render() + "\n")
         code = EXIT_PROGRAM_ERROR
     except KeyboardInterrupt:
         code = EXIT_INTERRUPTED
+    except Terminated as exc:
+        code = exc.exit_code
     except BrokenPipeError:
         _silence_stdout()
         code = EXIT_BROKEN_PIPE

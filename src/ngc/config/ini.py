@@ -24,15 +24,21 @@ to follow where the document is silent or describes a newer reader:
   file); a CR anywhere else is "ambiguous": a lookup that has to read across that line fails and
   rs274 prints :data:`AMBIGUOUS_CR_ERROR` once per such lookup.
 
+Only a regular file (or a directory, read as empty) is an INI file: :meth:`Ini.read` refuses a
+FIFO, device or socket without waiting for it, with the message of a file it cannot open (rs274
+would wait forever on a FIFO).
+
 ``#<_ini[section]name>`` parameters are resolved by :func:`ini_parameter`; the ``[RS274NGC]``
 settings the interpreter uses are collected by :meth:`Rs274ngcSettings.from_ini`.
 """
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
 import re
+import stat
 from dataclasses import dataclass
 
 from ..errors import NgcConfigError
@@ -107,6 +113,31 @@ def _ambiguous(line: str) -> bool:
     return "\r" in _body(line)[:-1]
 
 
+def _read_regular(name: str) -> bytes:
+    """The bytes of the regular file ``name``, ``b""`` for a directory; OSError otherwise.
+
+    A FIFO, device or socket is refused: on what ``stat`` sees before opening (a device is never
+    opened), then on the open descriptor (a FIFO put there since is opened without blocking).
+    """
+    with contextlib.suppress(FileNotFoundError):
+        _check_regular(name, os.stat(name).st_mode)
+    try:
+        with open(name, "rb", opener=_open_nonblocking) as handle:
+            _check_regular(name, os.fstat(handle.fileno()).st_mode)
+            return handle.read()
+    except IsADirectoryError:
+        return b""
+
+
+def _check_regular(name: str, mode: int) -> None:
+    if not (stat.S_ISREG(mode) or stat.S_ISDIR(mode)):
+        raise OSError(f"'{name}' is not a regular file")
+
+
+def _open_nonblocking(name: str, flags: int) -> int:
+    return os.open(name, flags | os.O_NONBLOCK | os.O_NOCTTY)
+
+
 @dataclass(frozen=True, slots=True)
 class Ini:
     """An INI file's text, searched on each lookup like rs274's reader does.
@@ -128,13 +159,14 @@ class Ini:
         ``Unable to open inifile:<path>:``; rs274 prints it (after ``executing``), exits 0 if the
         program is fine and otherwise runs exactly as without ``-i``.  A directory reads as an
         empty INI file, as it does for rs274 (no message, but it counts as an INI file).
+
+        Only a regular file (or a directory) is read: a FIFO, a device or a socket, also behind a
+        symbolic link, is a file that cannot be opened, refused without waiting (a device is not
+        opened, a FIFO is opened with ``O_NONBLOCK``), where rs274 waits forever on a FIFO.
         """
         name = os.fspath(path)
         try:
-            with open(name, "rb") as handle:
-                data = handle.read()
-        except IsADirectoryError:
-            data = b""
+            data = _read_regular(name)
         except OSError as exc:
             raise NgcConfigError(f"Unable to open inifile:{name}:", file=name) from exc
         return cls.parse(data.decode("utf-8", "surrogateescape"), path=name)

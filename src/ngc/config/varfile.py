@@ -31,6 +31,24 @@ created makes the save do nothing, silently.  The old file is read again at each
 numbers it lists, this time with a 4096-byte buffer.  :func:`write_var_file` does the same, except
 that its temporary file has a name of its own (``<path>.<random>.new``) and is fsync'ed, and that
 it never leaves a temporary file behind when the save fails.
+
+Where rs274 would block, or write where it should not, ngc differs (the parameter file may come
+from anyone):
+
+* Only a regular file (or a directory, or nothing) is a parameter file.  A FIFO, a device or a
+  socket, also behind a symbolic link, is refused when it is read (``Unable to open parameter
+  file: '<path>'``, before the program runs, exit 1) without waiting: a device is not even opened
+  and a FIFO is opened with ``O_NONBLOCK``; where rs274 waits forever on a FIFO and, with the
+  rights to, renames its file over ``/dev/null``.  A save never replaces one with a regular file
+  (:data:`NOT_REGULAR`).  A symbolic link to a regular file is read through and, as by rs274,
+  replaced by the new file; its target is not written.
+* A save keeps the permission bits of the file it replaces (a 0444 file stays 0444); rs274's new
+  file has 0666 less the umask, which is what a new parameter file gets here too.
+* The new content is written into an unnamed file (Linux ``O_TMPFILE``) in the file's directory,
+  which gets its ``<path>.<random>.new`` name only for the moment of the rename; a process killed
+  while writing leaves nothing.  Where unnamed files cannot be made or linked (another system, no
+  ``/proc``) a named temporary file is written, and removed when the save fails or is interrupted
+  by an exception (``ngc`` turns SIGTERM and SIGHUP into one).
 """
 
 from __future__ import annotations
@@ -40,11 +58,13 @@ import math
 import os
 import re
 import secrets
+import stat
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 
 from ..errors import NgcConfigError
 
 __all__ = [
+    "NOT_REGULAR",
     "PARAMETER_MAX",
     "PARAMETER_MIN",
     "REQUIRED_PARAMETERS",
@@ -69,6 +89,9 @@ REQUIRED_PARAMETERS: tuple[int, ...] = (
 
 OUT_OF_RANGE = "Parameter number out of range"
 OUT_OF_ORDER = "Parameter file out of order"
+UNABLE_TO_OPEN = "Unable to open parameter file: '{}'"
+# What a save returns instead of replacing a FIFO, device or socket (rs274 has no such message).
+NOT_REGULAR = "Unable to save parameter file: '{}' is not a regular file"
 
 # rs274 reads the file with fgets() into 256 bytes when it loads it, into 4096 when it saves.
 LOAD_PIECE = 255
@@ -181,18 +204,59 @@ def read_var_file(path: str | os.PathLike[str]) -> dict[int, float]:
     Raises :class:`NgcConfigError` with rs274's message (``Parameter number out of range``,
     ``Parameter file out of order``, ``Unable to open parameter file: '<path>'``) and ``source``
     ``""``: rs274 prints the message, then an empty line, and exits 1 without running the program.
+    A FIFO, device or socket is a file that cannot be opened; reading it never blocks.
     """
     name = os.fspath(path)
     if not os.path.exists(name):
         return {}
     try:
-        with open(name, "rb") as handle:
-            data = handle.read()
-    except IsADirectoryError:
-        return {}
+        data = _read_regular(name)
     except OSError as exc:
-        raise _config_error(f"Unable to open parameter file: '{name}'", name) from exc
-    return parse_var_file(data, name)
+        raise _config_error(UNABLE_TO_OPEN.format(name), name) from exc
+    return {} if data is None else parse_var_file(data, name)
+
+
+def _read_regular(name: str) -> bytes | None:
+    """The bytes of the regular file ``name`` (a symbolic link followed), ``None`` for a directory.
+
+    OSError when it cannot be read or is not a regular file: a device is refused before it is
+    opened, and what was opened is checked again, so that a FIFO put there since does not block.
+    """
+    if _not_regular(name):
+        raise OSError(f"'{name}' is not a regular file")
+    try:
+        with open(name, "rb", opener=_open_nonblocking) as handle:
+            if not stat.S_ISREG(os.fstat(handle.fileno()).st_mode):
+                raise OSError(f"'{name}' is not a regular file")
+            return handle.read()
+    except IsADirectoryError:
+        return None
+
+
+def _open_nonblocking(name: str, flags: int) -> int:
+    return os.open(name, flags | os.O_NONBLOCK | os.O_NOCTTY)
+
+
+def _status(name: str) -> os.stat_result | None:
+    """``stat`` (following a symbolic link), ``None`` when there is nothing to look at."""
+    try:
+        return os.stat(name)
+    except OSError:
+        return None
+
+
+def _not_regular(name: str) -> bool:
+    """Whether ``name`` is a FIFO, a device or a socket (what rs274 blocks on or replaces)."""
+    status = _status(name)
+    return status is not None and not (stat.S_ISREG(status.st_mode) or stat.S_ISDIR(status.st_mode))
+
+
+def _permissions(name: str) -> int | None:
+    """The permission bits a save keeps: those of the regular file it replaces."""
+    status = _status(name)
+    if status is None or not stat.S_ISREG(status.st_mode):
+        return None
+    return stat.S_IMODE(status.st_mode) & 0o777
 
 
 def persistent_numbers(kept: Iterable[int]) -> list[int]:
@@ -236,12 +300,11 @@ def _saved_numbers(path: str) -> list[int] | None:
     load time) makes it stop writing, silently, and keep the old file.
     """
     try:
-        with open(path, "rb") as handle:
-            data = handle.read()
+        data = _read_regular(path)
     except OSError:
         return []
     try:
-        return list(_walk(data, SAVE_PIECE, path))
+        return [] if data is None else list(_walk(data, SAVE_PIECE, path))
     except NgcConfigError:
         return None
 
@@ -250,25 +313,91 @@ def _reason(exc: OSError) -> str:
     return os.strerror(exc.errno) if exc.errno else str(exc)
 
 
+def _temp_name(path: str) -> str:
+    """A temporary name next to ``path``: ``<path>.<random>.new``."""
+    return f"{path}.{secrets.token_hex(6)}.new"
+
+
 def _create_temp(path: str) -> tuple[int, str]:
     """A new file next to ``path``, created 0666 less the umask like rs274's ``<path>.new``."""
     while True:
-        temp = f"{path}.{secrets.token_hex(6)}.new"
+        temp = _temp_name(path)
         try:
-            return os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666), temp
+            return os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_CLOEXEC, 0o666), temp
         except FileExistsError:
             continue
 
 
-def _write_all(fd: int, data: bytes) -> None:
-    """Write ``data``, flush it to the disk and close ``fd``."""
+def _write_all(fd: int, data: bytes, permissions: int | None) -> None:
+    """Write ``data``, give the file its permission bits and flush it to the disk."""
+    view = memoryview(data)
+    while view:
+        view = view[os.write(fd, view[:WRITE_BLOCK]) :]
+    if permissions is not None:
+        os.fchmod(fd, permissions)
+    os.fsync(fd)
+
+
+def _write_temp(path: str, data: bytes, permissions: int | None) -> str | None:
+    """The name of a new file next to ``path`` that holds ``data``; ``None`` when no file can be
+    created there.  OSError when the data cannot be written (no file is left then)."""
+    temp = _write_unnamed(path, data, permissions)
+    return temp if temp is not None else _write_named(path, data, permissions)
+
+
+def _write_unnamed(path: str, data: bytes, permissions: int | None) -> str | None:
+    """Write ``data`` into an unnamed file in the directory of ``path`` and only then give it a
+    temporary name; ``None`` when the system cannot, so that the caller writes a named file."""
+    tmpfile: int = getattr(os, "O_TMPFILE", 0)
+    if not tmpfile:
+        return None
     try:
-        view = memoryview(data)
-        while view:
-            view = view[os.write(fd, view[:WRITE_BLOCK]) :]
-        os.fsync(fd)
+        directory = os.open(os.path.dirname(os.path.abspath(path)),
+                            os.O_RDONLY | os.O_DIRECTORY | os.O_CLOEXEC)
+    except OSError:
+        return None
+    try:
+        try:
+            fd = os.open(".", tmpfile | os.O_WRONLY | os.O_CLOEXEC, 0o666, dir_fd=directory)
+        except OSError:
+            return None
+        try:
+            _write_all(fd, data, permissions)
+            return _link_unnamed(fd, directory, path)
+        finally:
+            os.close(fd)
+    finally:
+        os.close(directory)
+
+
+def _link_unnamed(fd: int, directory: int, path: str) -> str | None:
+    """Name the unnamed file ``fd`` in ``directory`` (linkat of its ``/proc`` entry, which follows
+    the link, as unprivileged processes may); ``None`` when that cannot be done."""
+    while True:
+        temp = _temp_name(path)
+        try:
+            os.link(f"/proc/self/fd/{fd}", os.path.basename(temp), dst_dir_fd=directory)
+        except FileExistsError:
+            continue
+        except OSError:
+            return None
+        return temp
+
+
+def _write_named(path: str, data: bytes, permissions: int | None) -> str | None:
+    """Write ``data`` into a named temporary file, removed again if the write fails."""
+    try:
+        fd, temp = _create_temp(path)
+    except OSError:
+        return None
+    try:
+        _write_all(fd, data, permissions)
+    except BaseException:
+        _remove(temp)
+        raise
     finally:
         os.close(fd)
+    return temp
 
 
 def _remove(path: str) -> None:
@@ -314,37 +443,48 @@ def write_var_file(
     replaced (after a successful :func:`read_var_file`, that is the keys it returned).
 
     The new content goes to a temporary file in the same directory, is flushed and fsync'ed, and
-    is renamed over ``path``, so an interrupted save leaves the old file whole.  With ``backup``,
-    ``<path>.bak`` is first made a hard link to the old file, as rs274 does.  Failures are not
-    raised: a temporary file that cannot be created means nothing happens (rs274 is silent too);
-    a failed link, rename or write returns its message, e.g. ``["link (updating variable file):
-    No such file or directory"]`` when ``path`` did not exist yet.  The temporary file never
-    outlives a failure.  (Where rs274 would rename a partly written file over the old one after a
-    failed write, this keeps the old file and reports ``write (updating variable file): ...``.)
+    is renamed over ``path``, so an interrupted save leaves the old file whole; the new file keeps
+    the old one's permission bits.  With ``backup``, ``<path>.bak`` is first made a hard link to
+    the old file, as rs274 does.  Failures are not raised: a temporary file that cannot be created
+    means nothing happens (rs274 is silent too); a failed link, rename or write returns its
+    message, e.g. ``["link (updating variable file): No such file or directory"]`` when ``path``
+    did not exist yet.  The temporary file never outlives a failure.  (Where rs274 would rename a
+    partly written file over the old one after a failed write, this keeps the old file and reports
+    ``write (updating variable file): ...``.)  A FIFO, device or socket at ``path`` is left as it
+    is, with the message :data:`NOT_REGULAR`.
     """
     name = os.fspath(path)
+    if _not_regular(name):
+        return [NOT_REGULAR.format(name)]
     if kept is None:
         kept = _saved_numbers(name)
         if kept is None:
             return []
     data = format_var_file(numbered, persistent_numbers(kept))
     try:
-        fd, temp = _create_temp(name)
-    except OSError:
+        temp = _write_temp(name, data, _permissions(name))
+    except OSError as exc:
+        return [f"write (updating variable file): {_reason(exc)}"]
+    if temp is None:
         return []
     try:
-        _write_all(fd, data)
-    except OSError as exc:
-        _remove(temp)
-        return [f"write (updating variable file): {_reason(exc)}"]
+        messages = _replace(temp, name, backup)
     except BaseException:
         _remove(temp)
         raise
+    _sync_directory(name)
+    return messages
+
+
+def _replace(temp: str, name: str, backup: bool) -> list[str]:
+    """Link the backup and rename ``temp`` over ``name``; ``temp`` is removed if that fails."""
+    if _not_regular(name):  # put there while the new file was written
+        _remove(temp)
+        return [NOT_REGULAR.format(name)]
     messages = _backup(name) if backup else []
     try:
         os.replace(temp, name)
     except OSError as exc:
         _remove(temp)
         return [*messages, f"rename (updating variable file): {_reason(exc)}"]
-    _sync_directory(name)
     return messages

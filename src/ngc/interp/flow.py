@@ -35,7 +35,7 @@ from ..errors import (
     NgcSemanticError,
     NgcSyntaxError,
 )
-from ..language.expressions import evaluate
+from ..language.expressions import INT_MIN, c_int, evaluate
 from ..language.lexer import C_SPACE
 from ..language.oword import KEYWORDS, MAX_ARGS, NOTHING, PROGRAM, OWord, number_label
 from ..language.parser import Block, skim_oword
@@ -520,7 +520,9 @@ class Flow:
         key = (f.body, block.line)
         left = self.active.get(key)
         if left is None:
-            left = round(evaluate(ow.args[0], self.interp.machine.params))  # halves to even, as rs274
+            count = evaluate(ow.args[0], self.interp.machine.params)
+            # Halves to even, through a C int: a count past its range (or NaN) runs no time.
+            left = c_int(round(count)) if count - count == 0.0 else INT_MIN
         if left > 0:
             self.active[key] = left - 1
         else:

@@ -277,7 +277,12 @@ class Interpreter:
         return self.fast.compile(raw, number, self.parse)
 
     def parse(self, raw: str, number: int) -> Block:
-        return parse_line(raw, number, self.table, self.fast is not None)
+        try:
+            return parse_line(raw, number, self.table, self.fast is not None)
+        except NgcError:
+            # rs274 computes values as it reads: one that fails before the read error wins.
+            parse_line(raw, number, self.table, False, eager=self.params)
+            raise
 
     def execute_line(self, raw: str, number: int) -> None:
         try:

@@ -13,7 +13,7 @@ from collections.abc import Callable
 
 from ..config.ini import Ini, ini_parameter
 from ..errors import NgcRuntimeError
-from ..language.parser import MAX_PARAMETER
+from ..language.parser import MAX_PARAMETER, READ_ONLY_PARAMETERS
 from .frames import to_machine
 from .state import AXES, State
 
@@ -28,7 +28,7 @@ COORD_STRIDE = 20
 CURRENT_POSITION = 5420
 DEBUG_ENABLE = 5599  # 0 silences (DEBUG,...) comments
 # Written by the machine only: a program that sets them gets "Parameter is readonly".
-READ_ONLY = frozenset(range(5400, 5414)) | frozenset(range(5420, 5429))
+READ_ONLY = READ_ONLY_PARAMETERS
 # Tool-changer fault parameters: rs274 accepts the setting and keeps 0.
 IGNORED_WRITES = frozenset({5600, 5601})
 

@@ -10,7 +10,7 @@ from ..language.codes import CodeTable
 from ..language.expressions import ParamContext
 from ..language.parser import COMMENT, PARAM, WORD, Block, check_index
 from ..language.words import Words, add_word
-from .parameters import Parameters, check_number_writable, check_writable
+from .parameters import PREDEFINED, Parameters, check_number_writable, check_writable
 
 Resolved = Words
 
@@ -29,14 +29,17 @@ def resolve(block: Block, params: Parameters, table: CodeTable) -> Words:
             _param(r, key, value, params)
         elif kind == COMMENT:
             r.comment = key  # type: ignore[assignment]
+    for target, _ in r.assigns:
+        if isinstance(target, str):
+            check_writable(target)  # rs274 refuses a predefined name once the line is read
     return r.finish()
 
 
 def _param(r: Words, key: object, value: object, params: Parameters) -> None:
     target: int | str
     if isinstance(key, str):
-        check_writable(key)
-        params.declare(key)
+        if key not in PREDEFINED:
+            params.declare(key)
         target = key
     elif isinstance(key, int):
         check_number_writable(key)

@@ -63,8 +63,8 @@ def _div(a: float, b: float) -> float:
 
 
 def _mod(a: float, b: float) -> float:
-    if b == 0.0:
-        raise NgcRuntimeError("Calculation resulted in 'not a number'")
+    if b == 0.0 or a - a != 0.0:
+        return math.nan  # C's fmod: the bracket that holds it is checked
     r = math.fmod(a, b)
     if r < 0.0:
         r += abs(b)
@@ -72,12 +72,57 @@ def _mod(a: float, b: float) -> float:
 
 
 def _pow(a: float, b: float) -> float:
-    if a < 0.0 and b != math.floor(b):
+    """C's pow: an overflow or a pole is infinite (the bracket that holds it is checked)."""
+    whole = math.floor(b) == b if b - b == 0.0 else b == b  # an infinite exponent counts as whole
+    if a < 0.0 and not whole:
         raise NgcRuntimeError("Attempt to raise negative to non integer power")
     try:
-        return float(a**b)
-    except (ZeroDivisionError, OverflowError):
-        raise NgcRuntimeError("Calculation resulted in 'infinity'") from None
+        return math.pow(a, b)
+    except (ValueError, OverflowError):
+        odd = a < 0.0 and b - b == 0.0 and b % 2.0 == 1.0
+        return -math.inf if odd else math.inf
+
+
+# rs274 stops the program when a value it reads is infinite or not a number.
+INFINITY = "Calculation resulted in 'infinity'"
+NOT_A_NUMBER = "Calculation resulted in 'not a number'"
+# rs274 converts to a C int: out of range (or NaN), the result is INT_MIN.
+INT_MIN = -2147483648
+
+
+def nonfinite(value: float) -> NgcRuntimeError:
+    """rs274's error for a value that is infinite or NaN."""
+    return NgcRuntimeError(NOT_A_NUMBER if value != value else INFINITY)
+
+
+def finite(value: float) -> float:
+    """``value`` if it is a finite number, else rs274's error.
+
+    rs274 checks each value it reads as an operand: a number, a parameter's value, a bracketed
+    expression, a function's result.  The operators inside a bracket are not checked
+    (``[10**400 GT 0]`` is 1), nor is a function's bracketed argument (``SIN[EXP[709]*10]`` fails
+    on SIN's NaN, not on the infinite argument), nor an o-word's bracket (``o1 repeat [10**400]``).
+
+    >>> finite(1.5)
+    1.5
+    >>> finite(float("inf"))
+    Traceback (most recent call last):
+    ngc.errors.NgcRuntimeError: Calculation resulted in 'infinity'
+    """
+    if value - value == 0.0:
+        return value
+    raise nonfinite(value)
+
+
+def c_int(value: float) -> int:
+    """C's conversion of a rounded double to a 32-bit int: INT_MIN when out of range or NaN.
+
+    >>> c_int(2.0), c_int(2147483648.0), c_int(float("nan"))
+    (2, -2147483648, -2147483648)
+    """
+    if -2147483648.0 <= value < 2147483648.0:
+        return int(value)
+    return INT_MIN
 
 
 def _bool(x: bool) -> float:
@@ -139,9 +184,27 @@ def _signed(r: float, x: float) -> float:
     return math.copysign(r, x) if r == 0.0 else r
 
 
+def _fix(x: float) -> float:
+    if x - x != 0.0:
+        return x  # floor of an infinity or NaN is itself
+    return _signed(float(math.floor(x)), x)
+
+
+def _fup(x: float) -> float:
+    if x - x != 0.0:
+        return x
+    return _signed(float(math.ceil(x)), x)
+
+
 def _round(x: float) -> float:
-    """Halves away from zero; a result of zero is +0 (rs274: ROUND[-0.11] is 0, not -0)."""
-    return float(math.floor(abs(x) + 0.5)) * (1.0 if x >= 0 else -1.0) + 0.0
+    """Halves away from zero; a result of zero is +0 (rs274: ROUND[-0.11] is 0, not -0).
+
+    rs274 goes through a C int: a result of 2**31 or more in size, or NaN, is INT_MIN.
+    """
+    a = abs(x) + 0.5
+    if not a < 2147483648.0:
+        return float(INT_MIN)
+    return float(math.floor(a)) * (1.0 if x >= 0 else -1.0) + 0.0
 
 
 # rs274 computes trigonometry in x87 long double: the angle in radians is x * pi / 180 with pi and
@@ -191,6 +254,8 @@ def _sin_30(x: float) -> float | None:
 
 
 def sin_degrees(x: float) -> float:
+    if x - x != 0.0:
+        return math.nan
     if x == 0.0:
         return x  # SIN[-0] is -0
     exact = _sin_30(x)
@@ -204,6 +269,8 @@ def sin_degrees(x: float) -> float:
 
 
 def cos_degrees(x: float) -> float:
+    if x - x != 0.0:
+        return math.nan
     exact = _sin_30(x + 90.0)
     if exact is not None:
         return exact
@@ -215,6 +282,8 @@ def cos_degrees(x: float) -> float:
 
 
 def _tan(x: float) -> float:
+    if x - x != 0.0:
+        return math.nan
     if x == 0.0:
         return x  # TAN[-0] is -0
     if x % 45.0 == 0.0 and x % 90.0 != 0.0 and abs(x) < 1e15:
@@ -232,8 +301,8 @@ UNARY: dict[str, Callable[[float], float]] = {
     "asin": _asin,
     "cos": cos_degrees,
     "exp": _exp,
-    "fix": lambda x: _signed(float(math.floor(x)), x),
-    "fup": lambda x: _signed(float(math.ceil(x)), x),
+    "fix": _fix,
+    "fup": _fup,
     "round": _round,
     "ln": _ln,
     "sin": sin_degrees,
@@ -244,7 +313,22 @@ UNARY: dict[str, Callable[[float], float]] = {
 
 def atan2_degrees(y: float, x: float) -> float:
     """ATAN[y]/[x]: four-quadrant inverse tangent in degrees."""
-    return math.degrees(math.atan2(y, x))
+    return finite(math.degrees(math.atan2(y, x)))
+
+
+def _checked_result(fn: Callable[[float], float]) -> Callable[[float], float]:
+    def run(x: float) -> float:
+        v = fn(x)
+        if v - v == 0.0:
+            return v
+        raise nonfinite(v)
+
+    return run
+
+
+# The functions as rs274 reads them: a result that is infinite or NaN stops the program.
+FUNCTIONS: dict[str, Callable[[float], float]] = {
+    name: _checked_result(fn) for name, fn in UNARY.items()}
 
 
 def as_expr(value: Value) -> Expr:
@@ -290,35 +374,22 @@ def fold_unary(fn: Callable[[float], float], arg: Value) -> Value:
     return lambda p: fn(a(p))
 
 
-def _reduce(values: list[float], ops: list[str]) -> float:
-    """Apply operators by precedence, left to right within a group, to already-read operands."""
-    for level in (4, 3, 2, 1, 0):
-        i = 0
-        while i < len(ops):
-            if PRECEDENCE[ops[i]] == level:
-                values[i : i + 2] = [BINARY[ops[i]](values[i], values[i + 1])]
-                del ops[i]
-            else:
-                i += 1
-    return values[0]
+def checked(value: Value) -> Value:
+    """``value``, stopping the program when it is infinite or not a number (see :func:`finite`)."""
+    if isinstance(value, float):
+        if value - value == 0.0:
+            return value
+        v = value
+        return lambda p: finite(v)
+    fn = value
 
+    def run(p: ParamContext) -> float:
+        v = fn(p)
+        if v - v == 0.0:
+            return v
+        raise nonfinite(v)
 
-def combine(operands: list[Value], operators: list[str]) -> Value:
-    """``v0 op1 v1 op2 v2 ...`` as one value.
-
-    rs274 reads (and so evaluates) every operand before it applies any operator, so an error in a
-    later operand wins over a division by zero in an earlier operation; the closure keeps that order.
-    """
-    if len(operators) == 1:
-        return fold_binary(operators[0], operands[0], operands[1])
-    if all(isinstance(v, float) for v in operands):
-        try:
-            return _reduce([float(v) for v in operands], list(operators))  # type: ignore[arg-type]
-        except NgcRuntimeError:
-            pass
-    fns = [as_expr(v) for v in operands]
-    ops = tuple(operators)
-    return lambda p: _reduce([f(p) for f in fns], list(ops))
+    return run
 
 
 def evaluate(value: Value, params: ParamContext) -> float:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from ..errors import NgcError, NgcSyntaxError
+from ..errors import NgcError, NgcRuntimeError, NgcSyntaxError
 from . import expressions as ex
 from .codes import LINUXCNC, POLAR_LETTERS, CodeTable
 from .lexer import C_SPACE, WHITE_SPACE, normalize
@@ -46,6 +46,9 @@ _OPERATORS = ("**", "*", "/", "+", "-", "mod", "eq", "ne", "gt", "ge", "lt", "le
 
 # The largest numbered parameter (overview.adoc, "Numbered Parameters").
 MAX_PARAMETER = 5601
+# Written by the machine only: a program that sets them gets "Parameter is readonly" (rs274
+# says so as it reads the setting, before the rest of the line).
+READ_ONLY_PARAMETERS = frozenset(range(5400, 5414)) | frozenset(range(5420, 5429))
 
 
 def n_label(digits: str | None) -> str:
@@ -72,11 +75,17 @@ class Block:
         self.resolved: Words | None = None
 
 
-def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool = True) -> Block:
+def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool = True,
+               eager: ex.ParamContext | None = None) -> Block:
     """Parse one source line (without its newline) into a :class:`Block`.
 
     ``table`` is the dialect's code table (unknown codes and modal clashes are read errors);
     ``fast`` lets a line of plain words with literal numbers take :func:`split_plain`.
+
+    ``eager`` reads the line as rs274 does, evaluating each value against those parameters as it
+    is read: an error in a value (``X[1/0]``) comes before a read error further on (``G0 G1``).
+    The interpreter reads a line so only when the line has a read error, to know which comes
+    first; the block it returns is of no other use.
 
     >>> b = parse_line("N10 G1 X1.5 Y[2*3] (cut)")
     >>> b.label, [(k, key) for k, key, _ in b.items]
@@ -90,7 +99,8 @@ def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool 
             block.delete = True
             text = text[1:]
         if not (fast and _fast(block, text, table)):
-            reader = _Reader(text, block, table)
+            reader = _Reader(text, block, table) if eager is None else _EagerReader(
+                text, block, table, eager)
             reader.read_line()
             _resolve_constant(block, reader.read)
     except NgcError as err:
@@ -304,13 +314,13 @@ class _Reader:
         if keyword in CONDITION:
             if not s.startswith("[", self.i):
                 raise self.error(f"Left bracket missing after '{keyword}'")
-            oword.args.append(self.read_expression())
+            oword.args.append(self.now(self.read_expression()))
         elif keyword == "call" or keyword in OPTIONAL_VALUE:
             while True:
                 self.skip_comments()
                 if not s.startswith("[", self.i) or (keyword != "call" and oword.args):
                     break
-                oword.args.append(self.read_expression())
+                oword.args.append(self.now(self.read_expression()))
         self.skip_comments()
         if self.i < len(s) and s[self.i] != ";":
             raise self.error("Unexpected character after O-word")
@@ -333,14 +343,24 @@ class _Reader:
         target: object
         if self.s.startswith("<", self.i):
             target = self.read_name()
+            self.declare(target)
         else:
             target = self.read_index()
+            if target in READ_ONLY_PARAMETERS:
+                raise NgcRuntimeError("Parameter is readonly")
         if not self.s.startswith("=", self.i):
             raise self.error("Equal sign missing in parameter setting")
         self.i += 1
         return (PARAM, target, self.read_value())
 
     # -- values -------------------------------------------------------------------------------
+    def now(self, value: ex.Value) -> ex.Value:
+        """A value rs274 has computed at this point of the line (see :class:`_EagerReader`)."""
+        return value
+
+    def declare(self, name: str) -> None:
+        """A named parameter's setting has been read (see :class:`_EagerReader`)."""
+
     def read_value(self) -> ex.Value:
         """A real value: number, ``[expression]``, ``#parameter``, function call, signed value."""
         s = self.s
@@ -348,7 +368,7 @@ class _Reader:
             raise self.error("No characters found in reading real value")
         c = s[self.i]
         if c == "[":
-            return self.read_expression()
+            return ex.checked(self.read_expression())
         if c == "#":
             self.i += 1
             return self.read_parameter_value()
@@ -377,11 +397,18 @@ class _Reader:
         return float(token)
 
     def read_expression(self) -> ex.Value:
+        """``[v0 op1 v1 ...]``, its value unchecked (the caller checks it where rs274 does).
+
+        rs274 applies each operator as soon as the next operator, of the same or a lower
+        precedence, is read (``[1/0 + SQRT[-1]]`` divides by zero before it reads SQRT): the
+        values are combined here in that order, so their closure evaluates in it too.
+        """
         start = self.i
         self.i += 1  # '['
-        operands = [self.read_value()]
-        operators: list[str] = []
+        values = [self.read_value()]
+        pending: list[str] = []
         s = self.s
+        precedence = ex.PRECEDENCE
         while True:
             if self.i >= len(s):
                 raise self.error("Unclosed expression", start)
@@ -395,11 +422,16 @@ class _Reader:
                     raise self.error(f"Unknown operation name starting with {c}")
                 raise self.error("Unknown operation")
             self.i += len(op)
-            operators.append(op)
-            operands.append(self.read_value())
-        if not operators:
-            return operands[0]
-        return ex.combine(operands, operators)
+            level = precedence[op]
+            while pending and precedence[pending[-1]] >= level:
+                right = values.pop()
+                values[-1] = self.now(ex.fold_binary(pending.pop(), values[-1], right))
+            pending.append(op)
+            values.append(self.read_value())
+        while pending:
+            right = values.pop()
+            values[-1] = ex.fold_binary(pending.pop(), values[-1], right)
+        return values[0]
 
     def read_function(self) -> ex.Value:
         s = self.s
@@ -424,7 +456,7 @@ class _Reader:
             if not s.startswith("[", self.i):
                 raise self.error("Left bracket missing after slash with atan")
             return ex.fold_binary_fn(ex.atan2_degrees, arg, self.read_expression())
-        return ex.fold_unary(ex.UNARY[name], arg)
+        return ex.fold_unary(ex.FUNCTIONS[name], arg)
 
     def read_exists(self) -> ex.Value:
         """EXISTS[#<name>]: 1 if the named parameter exists; EXISTS[#n]: 1 if n is in range."""
@@ -461,15 +493,59 @@ class _Reader:
         return lambda p: float(check_index(value(p)))
 
     def read_parameter_value(self) -> ex.Value:
+        """A parameter's value; one that is infinite or NaN (from a parameter file, or passed to
+        a subroutine) stops the program where it is read."""
         if self.s.startswith("<", self.i):
             name = self.read_name()
-            return lambda p: p.named(name)
+
+            def named(p: ex.ParamContext) -> float:
+                v = p.named(name)
+                if v - v == 0.0:
+                    return v
+                raise ex.nonfinite(v)
+
+            return named
         index = self.read_index()
         if isinstance(index, int):
             k = index
-            return lambda p: p.num(k)
+
+            def number(p: ex.ParamContext) -> float:
+                v = p.num(k)
+                if v - v == 0.0:
+                    return v
+                raise ex.nonfinite(v)
+
+            return number
         fn = index
-        return lambda p: p.num(int(fn(p)))
+
+        def computed(p: ex.ParamContext) -> float:
+            v = p.num(int(fn(p)))
+            if v - v == 0.0:
+                return v
+            raise ex.nonfinite(v)
+
+        return computed
+
+
+class _EagerReader(_Reader):
+    """Reads a line computing each value as it is read, in rs274's order (see :func:`parse_line`)."""
+
+    __slots__ = ("params",)
+
+    def __init__(self, text: str, block: Block, table: CodeTable, params: ex.ParamContext) -> None:
+        super().__init__(text, block, table)
+        self.params = params
+
+    def now(self, value: ex.Value) -> ex.Value:
+        return value if type(value) is float else value(self.params)  # type: ignore[operator]
+
+    def declare(self, name: str) -> None:
+        declare = getattr(self.params, "declare", None)
+        if declare is not None:
+            declare(name)  # from here on the name reads 0 (rs274)
+
+    def read_value(self) -> ex.Value:
+        return self.now(super().read_value())
 
 
 _FUNCTIONS = (

@@ -17,14 +17,23 @@ kept on the interpreter (``log``, ``probe_log``) until closed by the program or 
 * Files are confined to the working directory: a name that is absolute, or that resolves outside
   the working directory (``..``, a symbolic link leading out), is refused with
   :class:`NgcRuntimeError`, as are an empty name and a file that cannot be opened.
+* Only a regular file with exactly one link is written (:func:`open_log`): a FIFO, a device or a
+  socket is refused (``LOGOPEN: 'x' is not a regular file``), and so is a hard link that shares its
+  data with another name, possibly outside the working directory (``LOGOPEN: 'x' has other hard
+  links``).  The file is opened without following a symbolic link, without blocking and without
+  truncating; it is checked on the open descriptor, and only then truncated (LOGOPEN, PROBEOPEN).
+  A refused file is left as it was.  With ``Machine.write_files`` false no file is opened at all.
 
 Text is written byte for byte as ``ngc rs274`` reads the program (latin-1: one character per byte).
 """
 
 from __future__ import annotations
 
+import contextlib
+import errno
 import os
 import re
+import stat
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Literal, TextIO
 
@@ -99,10 +108,51 @@ def _close_probe_log(it: Machine) -> None:
 def _open(command: str, name: str, mode: Literal["w", "a"]) -> TextIO:
     """Open ``name`` for writing, refusing names outside the working directory."""
     path = confined_path(command, name)
+    return open(path, mode, encoding="latin-1", errors="replace", newline="",
+                opener=lambda resolved, _flags: open_log(command, name, resolved, mode == "a"))
+
+
+# O_NONBLOCK: opening a FIFO must not wait for a reader (with none, the open fails with ENXIO);
+# O_NOFOLLOW: ``path`` is already resolved, so a symbolic link there now was put in since.
+_OPEN_FLAGS = (os.O_WRONLY | os.O_CREAT | os.O_NONBLOCK | os.O_NOFOLLOW | os.O_NOCTTY
+               | os.O_CLOEXEC)
+
+
+def open_log(command: str, name: str, path: str, append: bool) -> int:
+    """A descriptor on the regular, singly linked file at the resolved ``path``, truncated unless
+    ``append``; NgcRuntimeError naming ``name`` otherwise, the file left untouched."""
+    with contextlib.suppress(OSError):
+        _check(command, name, os.lstat(path))  # refuse a device before opening it
     try:
-        return open(path, mode, encoding="latin-1", errors="replace", newline="")
+        fd = os.open(path, _OPEN_FLAGS | (os.O_APPEND if append else 0), 0o666)
     except OSError as exc:
-        raise NgcRuntimeError(f"{command}: cannot open '{name}': {exc.strerror}") from None
+        if exc.errno in (errno.ENXIO, errno.ELOOP):  # a FIFO without reader, a symbolic link
+            raise NgcRuntimeError(f"{command}: '{name}' is not a regular file") from None
+        raise _cannot_open(command, name, exc) from None
+    try:
+        _check(command, name, os.fstat(fd))  # what was opened, whatever lstat saw
+        if not append:
+            os.ftruncate(fd, 0)
+    except OSError as exc:
+        os.close(fd)
+        raise _cannot_open(command, name, exc) from None
+    except BaseException:
+        os.close(fd)
+        raise
+    return fd  # O_NONBLOCK stays: it changes nothing for a regular file
+
+
+def _cannot_open(command: str, name: str, exc: OSError) -> NgcRuntimeError:
+    return NgcRuntimeError(f"{command}: cannot open '{name}': {exc.strerror}")
+
+
+def _check(command: str, name: str, status: os.stat_result) -> None:
+    if stat.S_ISDIR(status.st_mode):
+        raise NgcRuntimeError(f"{command}: cannot open '{name}': {os.strerror(errno.EISDIR)}")
+    if not stat.S_ISREG(status.st_mode):
+        raise NgcRuntimeError(f"{command}: '{name}' is not a regular file")
+    if status.st_nlink != 1:
+        raise NgcRuntimeError(f"{command}: '{name}' has other hard links")
 
 
 def confined_path(command: str, name: str) -> str:

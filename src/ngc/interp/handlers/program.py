@@ -4,6 +4,7 @@
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Callable
 from types import MappingProxyType
@@ -112,10 +113,17 @@ def substitute(it: Machine, text: str) -> str:
                 fmt = _FORMATS.get(token, token)
             continue
         value = _parameter(it, token)
-        # rs274 shows a value under 0.0001 in size as 0 (SIN[0.005] prints 0.000000).
-        out.append("######" if value is None else fmt % (value if abs(value) >= _SHOWN_MIN else 0.0))
+        out.append("######" if value is None else _shown(fmt, value))
     out.append(text[pos:])
     return "".join(out)
+
+
+def _shown(fmt: str, value: float) -> str:
+    """A value as rs274 prints it: under 0.0001 in size as 0 (SIN[0.005] prints 0.000000), NaN
+    with its sign as C's printf shows it (``-nan``)."""
+    if value != value:
+        return "-nan" if math.copysign(1.0, value) < 0.0 else "nan"
+    return fmt % (value if not abs(value) < _SHOWN_MIN else 0.0)
 
 
 def _parameter(it: Machine, token: str) -> float | None:
