@@ -122,12 +122,13 @@ def test_check_good_file(capsys: pytest.CaptureFixture[str], good: Path) -> None
 
 
 def test_check_bad_file(capsys: pytest.CaptureFixture[str], bad: Path) -> None:
-    code, out, _ = run(capsys, "check", str(bad))
+    """The error on stderr (with its caret), the summary of what ran before it on stdout."""
+    code, out, err = run(capsys, "check", str(bad))
     lines = out.splitlines()
     assert code == 1
-    assert lines[0] == f"{bad}:3:1: {BAD_MESSAGE}"
-    assert lines[1] == f"{bad}: stopped at the error above, 4 lines"
-    assert lines[2] == "  moves: 1 (0 traverse, 1 feed, 0 arc)"
+    assert err.splitlines() == [f"{bad}:3:1: {BAD_MESSAGE}", "    G2 X2 R0.1", "    ^"]
+    assert lines[0] == f"{bad}: stopped by an error at line 3, 4 lines"
+    assert lines[1] == "  moves: 1 (0 traverse, 1 feed, 0 arc)"
 
 
 def test_check_inch_program_reports_inches(
@@ -141,22 +142,25 @@ def test_check_inch_program_reports_inches(
 
 
 def test_check_multiple_files(capsys: pytest.CaptureFixture[str], good: Path, bad: Path) -> None:
-    code, out, _ = run(capsys, "check", str(good), str(bad), str(good))
+    code, out, err = run(capsys, "check", str(good), str(bad), str(good))
     paragraphs = out.split("\n\n")
     assert code == 1
     assert len(paragraphs) == 3
     assert paragraphs[0].startswith(f"{good}: ok")
-    assert paragraphs[1].startswith(f"{bad}:3:1: {BAD_MESSAGE}\n")
+    assert paragraphs[1].startswith(f"{bad}: stopped by an error at line 3, 4 lines\n")
     assert paragraphs[2].startswith(f"{good}: ok")
+    assert err.startswith(f"{bad}:3:1: {BAD_MESSAGE}\n")
 
 
 def test_check_missing_file(
     capsys: pytest.CaptureFixture[str], good: Path, bad: Path, tmp_path: Path
 ) -> None:
+    """"cannot open" goes to stderr; stdout holds the reports of the files that were read."""
     missing = tmp_path / "nope.ngc"
-    code, out, _ = run(capsys, "check", str(bad), str(missing), str(good))
+    code, out, err = run(capsys, "check", str(bad), str(missing), str(good))
     assert code == 2  # an unreadable file outranks a program error
-    assert f"{missing}: cannot open: No such file or directory" in out.splitlines()
+    assert f"ngc check: cannot open {missing}: No such file or directory" in err.splitlines()
+    assert "cannot open" not in out
     assert out.count(": ok, ") == 1
 
 
@@ -210,10 +214,10 @@ def test_rs274_runs(capsys: pytest.CaptureFixture[str], good: Path) -> None:
 def test_internal_error_is_not_a_traceback(
     capsys: pytest.CaptureFixture[str], good: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def broken(path: object) -> None:
+    def broken(*args: object) -> None:
         raise ZeroDivisionError("float division by zero")
 
-    monkeypatch.setattr(report, "check_file", broken)
+    monkeypatch.setattr(report, "check_lines", broken)
     code, _, err = run(capsys, "check", str(good))
     assert code == 70
     assert err == "ngc: internal error: ZeroDivisionError: float division by zero\n"
@@ -222,10 +226,10 @@ def test_internal_error_is_not_a_traceback(
 def test_keyboard_interrupt_is_quiet(
     capsys: pytest.CaptureFixture[str], good: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def interrupted(path: object) -> None:
+    def interrupted(*args: object) -> None:
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(report, "check_file", interrupted)
+    monkeypatch.setattr(report, "check_lines", interrupted)
     code, _, err = run(capsys, "check", str(good))
     assert (code, err) == (130, "")
 
@@ -233,10 +237,10 @@ def test_keyboard_interrupt_is_quiet(
 def test_escaping_ngc_error_is_reported_normally(
     capsys: pytest.CaptureFixture[str], good: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def failing(path: object) -> None:
+    def failing(*args: object) -> None:
         raise NgcSemanticError("Bad thing", file="x.ngc", line=4, column=2, source="G1 X1")
 
-    monkeypatch.setattr(report, "check_file", failing)
+    monkeypatch.setattr(report, "check_lines", failing)
     code, _, err = run(capsys, "check", str(good))
     assert code == 1
     assert err == "x.ngc:4:2: Bad thing\n    G1 X1\n     ^\n"

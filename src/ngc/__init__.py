@@ -1,14 +1,46 @@
 """ngc — a pure-Python RS274/NGC (LinuxCNC dialect) G-code interpreter.
 
+It reads a program the way LinuxCNC's standalone ``rs274`` does and describes what the machine
+does as a stream of canonical machine operations, sent to a *sink*.
+
+Interpreting:
+
+* :func:`interpret` — run a whole program given as text; flushes the sink at the end.
+* :class:`Interpreter` — one interpreter with all its state: ``startup()``, then
+  ``run(lines, file=...)`` for a program given line by line (any iterable of lines, such as an
+  open file); ``configure(settings, ini)`` and ``load_parameters(values)`` apply an INI file's
+  settings and a parameter file.  Several interpreters can run in one process.
+* :class:`NgcError` — every problem with a program or its inputs: ``message``, ``file``,
+  ``line``, ``column``, ``source``; ``render()`` draws the source line with a caret.
+
+Canonical operations and sinks:
+
+* :class:`Op` — each operation is a ``NamedTuple`` from :mod:`ngc.canon.ops` (``StraightFeed``,
+  ``ArcFeed``, ...) whose fields are the arguments rs274 prints.
+* :class:`Sink` — the protocol a sink follows: ``emit(op, label, line)``, ``print_text(text)``,
+  ``flush()``.  Sinks provided: ``ngc.canon.text.TextSink`` (rs274's transcript),
+  ``ngc.canon.jsonl.JsonSink`` (strict JSON lines), ``ngc.canon.jsonl.ListSink`` (in memory).
+
+Checking and summing up motion:
+
+* :func:`check_file` — run a program file (writing no file), returning a :class:`CheckResult`:
+  the line count, a :class:`Summary` and the first error.
+* :func:`summarize` — a :class:`Summary` of a sequence of operations: move counts, rapid and feed
+  lengths, extents.
+
 >>> from ngc.canon.jsonl import ListSink
 >>> sink = ListSink()
 >>> interpret("G0 X1\\nM2\\n", sink)
 >>> sink.ops[5][0]
 StraightTraverse(x=1.0, y=0.0, z=0.0, a=0.0, b=0.0, c=0.0)
+
+The command line (``ngc rs274``, ``ngc canon``, ``ngc check``) is described in ``README.md``.
 """
 
 from __future__ import annotations
 
+import sys
+import types
 from typing import TYPE_CHECKING, Any
 
 from .canon.ops import Op, Sink
@@ -19,28 +51,6 @@ if TYPE_CHECKING:
     from .report import CheckResult, Summary, check_file, summarize
 
 __version__ = "0.1.0"
-
-# The report module (paths, dataclasses) loads on first use: ``ngc rs274`` starts without it.
-_REPORT_NAMES = frozenset({"CheckResult", "Summary", "check_file", "summarize"})
-
-
-def __getattr__(name: str) -> Any:
-    if name in _REPORT_NAMES:
-        from . import report
-
-        return getattr(report, name)
-    raise AttributeError(f"module 'ngc' has no attribute {name!r}")
-
-
-def interpret(text: str, sink: Sink, *, file: str | None = None) -> None:
-    """Interpret a whole program given as text, sending canonical operations to ``sink``.
-
-    Raises :class:`NgcError` at the first error.
-    """
-    interp = Interpreter(sink)
-    interp.startup()
-    interp.run(text.splitlines(), file=file)
-
 
 __all__ = [
     "CheckResult",
@@ -53,3 +63,44 @@ __all__ = [
     "interpret",
     "summarize",
 ]
+
+
+def interpret(text: str, sink: Sink, *, file: str | None = None) -> None:
+    """Interpret a whole program given as text, sending canonical operations to ``sink``, and
+    flush the sink (also when the program stops with an error).
+
+    Raises :class:`NgcError` at the first error; ``file`` is the name errors carry.
+
+    >>> import io
+    >>> from ngc.canon.text import TextSink
+    >>> out = io.StringIO()
+    >>> interpret("G21 F100\\nG1 X2\\nM2\\n", TextSink(out))
+    >>> out.getvalue().splitlines()[7]
+    '    8 N..... STRAIGHT_FEED(2.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)'
+    """
+    interp = Interpreter(sink)
+    try:
+        interp.startup()
+        interp.run(text.splitlines(), file=file)
+    finally:
+        sink.flush()
+
+
+class _Package(types.ModuleType):
+    """The ``ngc`` module, with the report API (paths, dataclasses) loaded on first use, so
+    that ``ngc rs274`` starts without it; ``help(ngc)`` lists it with the rest."""
+
+    _LAZY = frozenset({"CheckResult", "Summary", "check_file", "summarize"})
+
+    def __getattr__(self, name: str) -> Any:
+        if name in self._LAZY:
+            from . import report
+
+            return getattr(report, name)
+        raise AttributeError(f"module 'ngc' has no attribute {name!r}")
+
+    def __dir__(self) -> list[str]:
+        return sorted({*super().__dir__(), *self._LAZY})
+
+
+sys.modules[__name__].__class__ = _Package

@@ -22,15 +22,18 @@ import argparse
 import io
 import os
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from typing import TextIO
 
 from . import __version__, rs274
-from .canon.jsonl import JsonSink
+from .canon.jsonl import JsonSink, dumps
 from .canon.ops import Sink
 from .canon.text import TextSink
-from .errors import NgcError
+from .errors import NgcConfigError, NgcError
+from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
+from .options import MachineOptions, Setup, load_setup, new_interpreter, parse_positive
+from .progress import Progress, descriptor, is_terminal
 from .termination import Terminated, signals_raise
 
 EXIT_OK = 0
@@ -41,6 +44,7 @@ EXIT_INTERRUPTED = 130  # 128 + SIGINT, what shells report for Ctrl-C
 EXIT_BROKEN_PIPE = 141  # 128 + SIGPIPE, what a C filter killed by SIGPIPE reports
 
 SINKS: dict[str, Callable[[TextIO], Sink]] = {"text": TextSink, "json": JsonSink}
+STDIN_NAME = "<stdin>"  # how a program read from standard input (``-``) is named
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -84,7 +88,7 @@ def dispatch(args: list[str]) -> int:
     """Run one subcommand.  ``rs274`` bypasses argparse: its options are rs274's own (getopt)."""
     if args and args[0] == "rs274":
         return rs274.run(args[1:])
-    _pass_bytes_through()
+    _write_bytes_as_read()
     parser = build_parser()
     try:
         options = parser.parse_args(args)
@@ -97,12 +101,13 @@ def dispatch(args: list[str]) -> int:
     return command(options)
 
 
-def _pass_bytes_through() -> None:
-    """Programs are read as UTF-8 with undecodable bytes kept as surrogates; write those bytes
-    back as they were instead of failing (a UTF-8 locale's stdout is strict)."""
+def _write_bytes_as_read() -> None:
+    """Programs are read as UTF-8 with undecodable bytes kept as surrogates, file names are
+    bytes: write both back as the bytes they were, in UTF-8 whatever the locale's encoding (a
+    text that came in as bytes goes out as the same bytes; everything ngc adds is ASCII)."""
     for stream in (sys.stdout, sys.stderr):
         if isinstance(stream, io.TextIOWrapper):
-            stream.reconfigure(errors="surrogateescape")
+            stream.reconfigure(encoding="utf-8", errors="surrogateescape")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -113,12 +118,19 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     sub.add_parser(
         "rs274",
-        help="drop-in for LinuxCNC's standalone rs274 (batch mode)",
-        usage="ngc rs274 [-t TBL] [-v VAR] [-i INI] [-n 0|1|2] [-b] [-s] [-g] FILE",
+        help="drop-in for LinuxCNC's standalone rs274 (batch mode); ngc rs274 --help for more",
+        usage="ngc rs274 [-t TBL] [-v VAR] [-i INI] [-n 0|1|2] [-b] [-s] [-g] "
+        "[--max-iterations N] FILE [OUT]",
         add_help=False,
     )
-    canon = sub.add_parser("canon", help="print the canonical machine operations of a program")
-    canon.add_argument("file", metavar="FILE")
+    machine = _machine_options()
+    canon = sub.add_parser(
+        "canon", parents=[machine], help="print the canonical machine operations of a program",
+        description="Print the canonical machine operations of a program: interpreter start-up, "
+        "then the program, as rs274 prints them (text) or as JSON lines.",
+        epilog=PROGRAM_HELP,
+    )
+    canon.add_argument("file", metavar="FILE", help="the program (- for standard input)")
     canon.add_argument(
         "--format",
         choices=sorted(SINKS),
@@ -126,28 +138,110 @@ def build_parser() -> argparse.ArgumentParser:
         help="text: rs274's transcript format (default); json: JSON lines",
     )
     canon.set_defaults(run=run_canon)
-    check = sub.add_parser("check", help="validate programs and summarize their motion")
-    check.add_argument("files", metavar="FILE", nargs="+")
+    check = sub.add_parser(
+        "check", parents=[machine], help="validate programs and summarize their motion",
+        description="Run programs through the interpreter, writing nothing to disk: per file, "
+        "the first error (on stderr) and a summary of the motion (on stdout).",
+        epilog=PROGRAM_HELP,
+    )
+    check.add_argument("files", metavar="FILE", nargs="+", help="programs (- for standard input)")
+    check.add_argument(
+        "--format",
+        choices=("json", "text"),
+        default="text",
+        help="text: a paragraph per file (default); json: one JSON object per file and line",
+    )
     check.set_defaults(run=run_check)
     return parser
 
 
+PROGRAM_HELP = (
+    "Programs are read as UTF-8 (a leading byte-order mark is skipped; bytes that are not UTF-8 "
+    "are written back as they are, and in JSON as the text \\xNN). On a terminal, a run longer "
+    "than about a second shows a progress line on stderr."
+)
+
+
+def _machine_options() -> argparse.ArgumentParser:
+    """The machine inputs every command takes (see :mod:`ngc.options`)."""
+    parent = argparse.ArgumentParser(add_help=False)
+    group = parent.add_argument_group("machine inputs")
+    group.add_argument("-i", metavar="INI", dest="ini_file",
+                       help="apply the INI file's [RS274NGC] settings (subroutine path, "
+                       "Fanuc-style programs, #<_ini[SECTION]NAME> parameters)")
+    group.add_argument("-t", metavar="TOOLS", dest="tool_table",
+                       help="the tool table: checked to be a readable file, not used yet "
+                       "(tool tables are not implemented)")
+    group.add_argument("-v", metavar="VARS", dest="var_file",
+                       help="read the parameter file (only ngc rs274 writes it back)")
+    group.add_argument("--max-iterations", metavar="N", type=_positive,
+                       default=DEFAULT_MAX_ITERATIONS,
+                       help="the loop iterations a run may make before it stops with an error "
+                       f"(default {DEFAULT_MAX_ITERATIONS})")
+    return parent
+
+
+def _positive(text: str) -> int:
+    number = parse_positive(text)
+    if number is None:
+        raise argparse.ArgumentTypeError(f"needs a positive number, not {text!r}")
+    return number
+
+
+def _setup(command: str, options: argparse.Namespace) -> tuple[MachineOptions, Setup]:
+    """The machine inputs of the command line, loaded; raises :class:`NgcConfigError`.  What
+    rs274 would report about the INI file's settings is printed as a warning."""
+    machine = MachineOptions(ini_file=options.ini_file, tool_table=options.tool_table,
+                             var_file=options.var_file, max_iterations=options.max_iterations)
+    setup = load_setup(machine)
+    for message in setup.settings.messages:
+        sys.stderr.write(f"ngc {command}: warning: {message}\n")
+    return machine, setup
+
+
+def _open_program(path: str) -> TextIO:
+    """A program file (``-``: standard input) as UTF-8 text: a leading byte-order mark skipped,
+    bytes that are not UTF-8 kept as surrogates, line ends as they are.  Raises ``OSError``."""
+    if path == "-":
+        return open(sys.stdin.fileno(), encoding="utf-8-sig", errors="surrogateescape",
+                    newline="", closefd=False)
+    return open(path, encoding="utf-8-sig", errors="surrogateescape", newline="")
+
+
+def _name(path: str) -> str:
+    """How a program file is named in messages: its bytes as UTF-8 text, like the program's."""
+    return STDIN_NAME if path == "-" else os.fsencode(path).decode("utf-8", "surrogateescape")
+
+
+def _progress(name: str, handle: TextIO, *, output_to_terminal: bool) -> Progress:
+    """The progress line of a program file: on stderr, if it is a terminal and stdout is not
+    (``ngc canon`` on a terminal shows its output instead)."""
+    active = is_terminal(sys.stderr) and not output_to_terminal
+    return Progress(sys.stderr, name, descriptor(handle), active=active)
+
+
 def run_canon(options: argparse.Namespace) -> int:
     """``ngc canon FILE``: interpreter start-up and program, streamed to stdout."""
-    path: str = options.file
     try:
-        handle = open(path, encoding="utf-8", errors="surrogateescape", newline="")  # noqa: SIM115
+        machine, setup = _setup("canon", options)
+    except NgcConfigError as exc:
+        sys.stderr.write(f"ngc canon: {exc.message}\n")
+        return EXIT_USAGE
+    name = _name(options.file)
+    try:
+        handle = _open_program(options.file)
     except OSError as exc:
-        sys.stderr.write(f"ngc canon: cannot open {path}: {exc.strerror}\n")
+        sys.stderr.write(f"ngc canon: cannot open {name}: {exc.strerror}\n")
         return EXIT_USAGE
     sink = SINKS[options.format](sys.stdout)
-    interp = Interpreter(sink)
-    with handle:
+    interp = new_interpreter(sink, machine, setup)
+    with handle, _progress(name, handle, output_to_terminal=is_terminal(sys.stdout)) as progress:
         try:
             interp.startup()
-            interp.run(_lines(handle), file=path)
+            interp.run(progress.lines(handle), file=name)
         except NgcError as exc:
             _flush(sink)
+            progress.close()
             sys.stderr.write(exc.render() + "\n")
             return EXIT_PROGRAM_ERROR
     _flush(sink)
@@ -161,29 +255,51 @@ def _flush(sink: Sink) -> None:
     sys.stdout.flush()
 
 
-def _lines(handle: TextIO) -> Iterator[str]:
-    for line in handle:
-        yield line.rstrip("\n")
-
-
 def run_check(options: argparse.Namespace) -> int:
-    """``ngc check FILE...``: per file, the error (if any) and a summary paragraph, on stdout.
+    """``ngc check FILE...``: per file, the error (if any) on stderr and a summary (a paragraph,
+    or a JSON object on one line) on stdout.  Nothing is written to disk.
 
-    Exit 2 if a file cannot be read, else 1 if a program has an error, else 0.
+    Exit 2 if a file or a machine input cannot be read, else 1 if a program has an error, else 0.
     """
     from . import report  # loaded on use: ``ngc rs274`` starts without it
 
+    try:
+        machine, setup = _setup("check", options)
+    except NgcConfigError as exc:
+        sys.stderr.write(f"ngc check: {exc.message}\n")
+        return EXIT_USAGE
+
+    def quiet(sink: Sink) -> Interpreter:
+        return new_interpreter(sink, machine, setup, write_files=False)
+
+    json_lines = options.format == "json"
     code = EXIT_OK
     for i, path in enumerate(options.files):
-        if i:
+        if i and not json_lines:
             sys.stdout.write("\n")
+        name = _name(path)
         try:
-            result = report.check_file(path)
+            handle = _open_program(path)
         except OSError as exc:
-            sys.stdout.write(f"{path}: cannot open: {exc.strerror}\n")
+            sys.stderr.write(f"ngc check: cannot open {name}: {exc.strerror}\n")
+            if json_lines:
+                sys.stdout.write(dumps(_unreadable(name, exc)) + "\n")
             code = EXIT_USAGE
             continue
-        sys.stdout.write(report.render(result) + "\n")
-        if not result.ok and code == EXIT_OK:
-            code = EXIT_PROGRAM_ERROR
+        with handle, _progress(name, handle, output_to_terminal=False) as progress:
+            result = report.check_lines(progress.lines(handle), name, quiet)
+        if result.error is not None:
+            sys.stderr.write(result.error.render() + "\n")
+            if code == EXIT_OK:
+                code = EXIT_PROGRAM_ERROR
+        sys.stdout.write((dumps(report.record(result)) if json_lines else report.render(result))
+                         + "\n")
+        sys.stdout.flush()
     return code
+
+
+def _unreadable(name: str, exc: OSError) -> dict[str, object]:
+    """``ngc check --format json``'s object for a file that cannot be opened."""
+    error = {"message": f"cannot open: {exc.strerror}", "file": name, "line": None,
+             "column": None, "source": None}
+    return {"file": name, "ok": False, "lines": None, "error": error, "summary": None}

@@ -16,10 +16,9 @@ import math
 import os
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
-from typing import TextIO
 
 from .canon import ops
-from .canon.ops import Op
+from .canon.ops import Op, Sink
 from .errors import NgcError
 from .interp.interpreter import Interpreter
 
@@ -337,8 +336,44 @@ class CheckResult:
         return self.error is None
 
 
+def _quiet_interpreter(sink: Sink) -> Interpreter:
+    return Interpreter(sink, write_files=False)
+
+
+def check_lines(
+    lines: Iterable[str],
+    name: str,
+    new_interpreter: Callable[[Sink], Interpreter] = _quiet_interpreter,
+) -> CheckResult:
+    """Run a program, given as its lines, through an interpreter, keeping only a summary of its
+    motion; ``name`` is the file name errors carry.  ``new_interpreter`` makes the interpreter
+    for a given sink; the default writes no file (log comments emit their calls only).
+
+    Errors in the program are returned in :attr:`CheckResult.error` (interpretation stops at the
+    first one); the lines after it are counted.
+
+    >>> result = check_lines(["G21 F100", "G1 X3", "G1 Y4", "M2"], "square.ngc")
+    >>> result.ok, result.lines, result.summary.feeds, result.summary.feed_length
+    (True, 4, 2, 7.0)
+    """
+    summarizer = Summarizer()
+    counted = _CountedLines(lines)
+    error: NgcError | None = None
+    interp = new_interpreter(summarizer)
+    interp.startup()
+    try:
+        interp.run(counted, file=name)
+    except NgcError as exc:
+        error = exc
+    return CheckResult(path=name, lines=counted.total(), summary=summarizer.summary(),
+                       error=error)
+
+
 def check_file(path: str | os.PathLike[str]) -> CheckResult:
-    """Run a program file through the interpreter, keeping only a summary of its motion.
+    """Run a program file through an interpreter that writes no file, keeping only a summary of
+    its motion (see :func:`ngc.report.check_lines`).  The file is read as UTF-8 (a byte that is not UTF-8
+    is kept as a lone surrogate, see :mod:`ngc.canon.jsonl`); a leading byte-order mark is
+    skipped.
 
     Raises ``OSError`` if the file cannot be read; errors in the program are returned in
     :attr:`CheckResult.error` (interpretation stops at the first one).
@@ -355,38 +390,37 @@ def check_file(path: str | os.PathLike[str]) -> CheckResult:
     (1, 'Cannot do g1 with zero feed rate')
     """
     name = os.fspath(path)
-    summarizer = Summarizer()
-    error: NgcError | None = None
-    with open(name, encoding="utf-8", errors="surrogateescape", newline="") as handle:
-        counted = _CountedLines(handle)
-        interp = Interpreter(summarizer)
-        interp.startup()
-        try:
-            interp.run(counted, file=name)
-        except NgcError as exc:
-            error = exc
-        lines = counted.count + sum(1 for _ in handle)
-    return CheckResult(path=name, lines=lines, summary=summarizer.summary(), error=error)
+    with open(name, encoding="utf-8-sig", errors="surrogateescape", newline="") as handle:
+        return check_lines(handle, name)
 
 
 class _CountedLines:
-    """The lines of a file without their newline, counting how many were read."""
+    """The lines of a program, counting those read; :meth:`total` reads and counts the rest."""
 
-    def __init__(self, handle: TextIO) -> None:
-        self._handle = handle
+    def __init__(self, lines: Iterable[str]) -> None:
+        self._lines = iter(lines)
         self.count = 0
 
     def __iter__(self) -> Iterator[str]:
-        for line in self._handle:
+        for line in self._lines:
             self.count += 1
-            yield line.rstrip("\n")
+            yield line
+
+    def total(self) -> int:
+        return self.count + sum(1 for _ in self._lines)
 
 
 def render(result: CheckResult) -> str:
-    """``ngc check``'s report on one file: the error (``file:line:col: message``), if any, then
-    a paragraph with the line count, the moves, the path lengths and the extents."""
+    """``ngc check``'s report on one file: a paragraph with the line count, the moves, the path
+    lengths and the extents (the error itself goes to stderr)."""
     s = result.summary
-    head = f"{result.path}: ok" if result.ok else f"{result.path}: stopped at the error above"
+    error = result.error
+    if error is None:
+        head = f"{result.path}: ok"
+    elif error.line is None:
+        head = f"{result.path}: error"
+    else:
+        head = f"{result.path}: stopped by an error at line {error.line}"
     paragraph = [
         f"{head}, {result.lines} lines",
         f"  moves: {s.moves} ({s.traverses} traverse, {s.feeds} feed, {s.arcs} arc)",
@@ -396,8 +430,6 @@ def render(result: CheckResult) -> str:
     ]
     if s.mixed_units:
         paragraph.append(f"  (the program changes length units; all lengths are in {s.units})")
-    if result.error is not None:
-        paragraph.insert(0, f"{result.error.where()}: {result.error.message}")
     return "\n".join(paragraph)
 
 
@@ -406,3 +438,29 @@ def _extents_text(s: Summary) -> str:
         return "none (no motion)"
     lo, hi = s.extents.low, s.extents.high
     return "  ".join(f"{a} {lo[i]:.4f} .. {hi[i]:.4f}" for i, a in enumerate("XYZ")) + f" {s.units}"
+
+
+def error_record(error: NgcError) -> dict[str, object]:
+    """An error as a JSON-ready mapping: message, file, line, column (1 when only the line is
+    known, as in :meth:`NgcError.where`), source line."""
+    column = error.column or (None if error.line is None else 1)
+    return {"message": error.message, "file": error.file, "line": error.line,
+            "column": column, "source": error.source}
+
+
+def record(result: CheckResult) -> dict[str, object]:
+    """``ngc check --format json``'s object for one file (see ``README.md``)."""
+    s = result.summary
+    extents = None
+    if s.extents is not None:
+        extents = {"low": list(s.extents.low), "high": list(s.extents.high)}
+    summary = {
+        "units": s.units, "moves": s.moves, "traverses": s.traverses, "feeds": s.feeds,
+        "arcs": s.arcs, "rapid_length": s.rapid_length, "feed_length": s.feed_length,
+        "extents": extents, "mixed_units": s.mixed_units,
+    }  # fmt: skip
+    return {
+        "file": result.path, "ok": result.ok, "lines": result.lines,
+        "error": None if result.error is None else error_record(result.error),
+        "summary": summary,
+    }  # fmt: skip

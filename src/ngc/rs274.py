@@ -1,7 +1,17 @@
 """``ngc rs274``: a drop-in for LinuxCNC's standalone ``rs274`` in batch mode.
 
 Same options (GNU getopt: options may follow the file), same stdout transcript, same stderr
-(``executing``, then per error the message and the offending source line), same exit code.
+(``executing``, then per error the message and the offending source line), same exit code, byte
+for byte: the program is read as bytes and its bytes are written back as they are, and so are
+file names (``os.fsencode``), whatever the locale.  A UTF-8 byte-order mark is three bytes like
+any others: rs274 stops on it with ``Bad character '\\357' used`` and so does ``ngc rs274``
+(``ngc canon`` and ``ngc check`` skip it).
+
+Differences, all on purpose: ``-h``/``--help`` prints :data:`HELP` on stdout (rs274 has no such
+option), ``--max-iterations N`` bounds the loop iterations of a run, and on a terminal a long run
+shows a progress line on stderr (:mod:`ngc.progress`; never when stderr is not a terminal, so
+the output stays byte-exact).  ``-n``, ``-s`` and interactive mode are parsed but not modelled:
+ngc always runs the program in batch mode and stops at the first error.
 """
 
 from __future__ import annotations
@@ -10,6 +20,7 @@ import getopt
 import io
 import os
 import sys
+from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TextIO
 
@@ -20,11 +31,70 @@ from .config.varfile import read_var_file, write_var_file
 from .errors import NgcConfigError, NgcError, NgcOpenError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
+from .options import MachineOptions, Setup, new_interpreter, parse_positive
+from .progress import Progress, descriptor, is_terminal
 
-USAGE = (
-    "Usage: rs274 [-p interp.so] [-t tool.tbl] [-v var-file.var] [-n 0|1|2]\n"
-    "          [-b] [-s] [-g] [input file [output file]]\n"
-)
+# What rs274 prints after a bad command line (on stderr, exit 1).
+USAGE = """\
+Usage: rs274 [-p interp.so] [-t tool.tbl] [-v var-file.var] [-n 0|1|2]
+          [-b] [-s] [-g] [input file [output file]]
+
+    -p: Specify the pluggable interpreter to use
+    -t: Specify the .tbl (tool table) file to use
+    -v: Specify the .var (parameter) file to use
+    -n: Specify the continue mode:
+           0: continue
+           1: enter MDI mode
+           2: stop (default)
+    -b: Toggle the 'block delete' flag (default: OFF)
+    -s: Toggle the 'print stack' flag (default: OFF)
+    -g: Toggle the 'go (batch mode)' flag (default: OFF)
+    -i: specify the INI file (default: no INI file)
+    -T: call task_init()
+    -l: specify the log_level (default: -1)
+"""
+
+HELP = f"""\
+Usage: ngc rs274 [-t tool.tbl] [-v var-file.var] [-i file.ini] [-n 0|1|2] [-b] [-s] [-g]
+                 [--max-iterations N] [input file [output file]]
+
+A drop-in for LinuxCNC's standalone rs274 interpreter: it runs the input file and prints the
+canonical machine operations (the transcript) on stdout, or into the output file; errors go to
+stderr, the exit status is 0 or 1; all as rs274 does, byte for byte.
+
+Options (rs274's own; options may also follow the file names):
+    -t FILE   the tool table: accepted and not read (tool tables are not implemented yet)
+    -v FILE   the parameter file: read at the start, written back at the start and at the end
+    -i FILE   the INI file: its [RS274NGC] settings (SUBROUTINE_PATH, DISABLE_FANUC_STYLE_SUB,
+              ...) and the #<_ini[SECTION]NAME> parameters
+    -n 0|1|2  what to do after an error: 0 continue, 1 enter MDI mode, 2 stop (the default);
+              accepted, but ngc always stops at the first error
+    -b        toggle the block delete switch (default: off): lines starting with / are skipped
+    -s        toggle printing the interpreter's call stack after an error: accepted, no effect
+    -g        toggle batch mode (rs274 asks what to do without it): ngc always runs in batch mode
+    -p FILE   rs274's pluggable interpreter: not supported (an error)
+
+Options of ngc:
+    --max-iterations N
+              the loop iterations a run may make before it stops with an error (a runaway
+              loop); default {DEFAULT_MAX_ITERATIONS}
+    -h, --help
+              print this help and exit
+
+Reading a program from standard input (rs274's MDI mode, no input file) is not supported.
+On a terminal, a run longer than about a second shows a progress line on stderr.
+"""
+
+# What rs274 (glibc's getopt) says where Python's getopt says "option -x <words>": by (dashes,
+# words).  rs274 has no long options: to it, ``--foo`` starts with the unknown option ``-``.
+GETOPT_MESSAGES = {
+    ("-", "not recognized"): "invalid option -- '{0}'",
+    ("--", "not recognized"): "invalid option -- '-'",
+    ("-", "requires argument"): "option requires an argument -- '{0}'",
+    ("--", "requires argument"): "option '--{0}' requires an argument",
+    ("--", "must not have an argument"): "option '--{0}' doesn't allow an argument",
+    ("--", "not a unique prefix"): "option '--{0}' is ambiguous",
+}
 
 
 @dataclass
@@ -41,38 +111,23 @@ class Rs274Options:
     print_stack: bool = False  # -s toggles
     batch: bool = False  # -g toggles
     max_iterations: int = DEFAULT_MAX_ITERATIONS  # --max-iterations (ngc only)
+    help: bool = False  # -h, --help (ngc only)
+
+    def machine(self) -> MachineOptions:
+        """The machine inputs, as every command takes them."""
+        return MachineOptions(ini_file=self.ini_file, tool_table=self.tool_table,
+                              var_file=self.var_file, max_iterations=self.max_iterations)
 
 
 def parse_args(argv: list[str]) -> Rs274Options:
-    """Parse rs274's options; raises ``ValueError`` with the usage text on a bad command line."""
+    """Parse rs274's options; raises ``ValueError`` with the text to print on a bad command line."""
     try:
-        pairs, rest = getopt.gnu_getopt(argv, "p:t:v:i:n:bsg", ["max-iterations="])
+        pairs, rest = getopt.gnu_getopt(argv, "p:t:v:i:n:bsgh", ["max-iterations=", "help"])
     except getopt.GetoptError as err:
-        raise ValueError(f"rs274: {err.msg}\n{USAGE}") from None
+        raise ValueError(f"rs274: {_getopt_message(err)}\n{USAGE}") from None
     o = Rs274Options()
     for flag, value in pairs:
-        if flag == "-t":
-            o.tool_table = value
-        elif flag == "-v":
-            o.var_file = value
-        elif flag == "-i":
-            o.ini_file = value
-        elif flag == "-n":
-            if value not in ("0", "1", "2"):
-                raise ValueError(USAGE)
-            o.on_error = int(value)
-        elif flag == "-b":
-            o.block_delete = not o.block_delete
-        elif flag == "-s":
-            o.print_stack = not o.print_stack
-        elif flag == "-g":
-            o.batch = not o.batch
-        elif flag == "--max-iterations":
-            if not value.isdigit() or int(value) < 1:
-                raise ValueError(f"ngc rs274: --max-iterations needs a positive number\n{USAGE}")
-            o.max_iterations = int(value)
-        elif flag == "-p":
-            raise ValueError("rs274: -p (pluggable interpreters) is not supported\n")
+        _apply(o, flag, value)
     if len(rest) > 2:
         raise ValueError(USAGE)
     if rest:
@@ -80,6 +135,43 @@ def parse_args(argv: list[str]) -> Rs274Options:
     if len(rest) > 1:
         o.output = rest[1]
     return o
+
+
+def _apply(o: Rs274Options, flag: str, value: str) -> None:
+    if flag == "-t":
+        o.tool_table = value
+    elif flag == "-v":
+        o.var_file = value
+    elif flag == "-i":
+        o.ini_file = value
+    elif flag == "-n":
+        if value not in ("0", "1", "2"):
+            raise ValueError(USAGE)
+        o.on_error = int(value)
+    elif flag == "-b":
+        o.block_delete = not o.block_delete
+    elif flag == "-s":
+        o.print_stack = not o.print_stack
+    elif flag == "-g":
+        o.batch = not o.batch
+    elif flag in ("-h", "--help"):
+        o.help = True
+    elif flag == "--max-iterations":
+        number = parse_positive(value)
+        if number is None:
+            raise ValueError(f"ngc rs274: --max-iterations needs a positive number\n{USAGE}")
+        o.max_iterations = number
+    elif flag == "-p":
+        raise ValueError("rs274: -p (pluggable interpreters) is not supported\n")
+
+
+def _getopt_message(err: getopt.GetoptError) -> str:
+    """glibc's wording for what Python's getopt reports."""
+    dashes = "--" if err.msg.startswith("option --") else "-"
+    for (kind, words), template in GETOPT_MESSAGES.items():
+        if kind == dashes and err.msg.endswith(words):
+            return template.format(err.opt)
+    return err.msg
 
 
 def run(argv: list[str], stdout: TextIO | None = None, stderr: TextIO | None = None, *,
@@ -104,11 +196,31 @@ def run(argv: list[str], stdout: TextIO | None = None, stderr: TextIO | None = N
 
 
 def _byte_stream(stream: TextIO) -> TextIO:
+    """A latin-1 view of ``stream``'s bytes: each character of the program text is one byte.
+
+    Every text written is latin-1 text already (file names through :func:`_as_read`); a
+    character beyond U+00FF would be a bug, shown as ``\\uNNNN`` rather than ending the run."""
     buffer = getattr(stream, "buffer", None)
     if buffer is None:
         return stream
     stream.flush()
-    return io.TextIOWrapper(buffer, encoding="latin-1", newline="\n", line_buffering=False)
+    return io.TextIOWrapper(buffer, encoding="latin-1", errors="backslashreplace", newline="\n",
+                            line_buffering=False)
+
+
+def _as_read(text: str) -> str:
+    """A file name (or a message holding one) as the bytes it stands for, one character per
+    byte like the program text: ``€.ngc`` is ``\\xe2\\x82\\xac.ngc``."""
+    return os.fsencode(text).decode("latin-1")
+
+
+def _open_program(path: str) -> TextIO:
+    """The program file, read as bytes (latin-1 maps each byte to one character); a directory
+    reads as an empty file, as it does for rs274.  Raises ``OSError``."""
+    try:
+        return open(path, encoding="latin-1", newline="")
+    except IsADirectoryError:
+        return io.StringIO()
 
 
 def _run(argv: list[str], out: TextIO, err: TextIO, fast: bool = True) -> int:
@@ -117,63 +229,57 @@ def _run(argv: list[str], out: TextIO, err: TextIO, fast: bool = True) -> int:
     except ValueError as exc:
         err.write(str(exc))
         return 1
+    if o.help:
+        out.write(HELP)
+        return 0
     if o.program is None:
         err.write("ngc rs274: reading a program from standard input (MDI) is not supported\n")
         return 1
-    try:
-        # Bytes in, bytes out: rs274 reads a program as bytes (latin-1 maps each byte to one char).
-        handle = open(o.program, encoding="latin-1", newline="")  # noqa: SIM115 (closed below)
-    except OSError as exc:
-        err.write(f"executing\nUnable to open file {o.program}: {exc.strerror}\n")
-        return 1
     err.write("executing\n")
-    settings, ini = _settings(o, err)
     transcript: TextIO | None = None
     if o.output is not None:
         try:
             transcript = open(o.output, "w", encoding="latin-1", newline="\n")  # noqa: SIM115
-        except OSError as exc:
-            err.write(f"Unable to open output file {o.output}: {exc.strerror}\n")
-            handle.close()
+        except OSError:
+            err.write(f"could not open output file {_as_read(o.output)}\n")
             return 1
     try:
-        with handle:
-            return _interpret(o, handle, settings, ini, out if transcript is None else transcript,
-                              None if transcript is None else out, err, fast)
+        sink = TextSink(out, None) if transcript is None else TextSink(transcript, out)
+        return _interpret(o, sink, err, fast, terminal_output=is_terminal(out))
     finally:
         if transcript is not None:
             transcript.close()
 
 
-def _interpret(o: Rs274Options, handle: TextIO, settings: Rs274ngcSettings, ini: Ini | None,
-               out: TextIO, prints: TextIO | None, err: TextIO, fast: bool) -> int:
-    sink = TextSink(out, prints)
-    interp = Interpreter(sink, block_delete=o.block_delete, max_iterations=o.max_iterations,
-                         fast=fast)
-    interp.configure(settings, ini)
+def _interpret(o: Rs274Options, sink: TextSink, err: TextIO, fast: bool,
+               terminal_output: bool) -> int:
+    """From the INI file to the final ON_RESET, in rs274's order."""
+    settings, ini = _settings(o, err)
+    interp = new_interpreter(sink, o.machine(), Setup(settings, ini), block_delete=o.block_delete,
+                             fast=fast)
     interp.emit(ops.UseLengthUnits("CANON_UNITS_MM"))
     if o.var_file is not None:
         try:
             values = read_var_file(o.var_file)
         except NgcConfigError as exc:
             sink.flush()
-            report(err, exc)  # rs274: the message, then an empty line
+            report(err, exc, _as_read(exc.message))  # rs274: the message, then an empty line
             return 1
         interp.load_parameters(values, settings.disable_g92_persistence)
         _save(o.var_file, interp, err)
     interp.startup(units=False)
-    failed = False
+    name = _as_read(o.program or "")
     try:
-        interp.run(handle, file=o.program, on_open=lambda: interp.emit(ops.OnReset()))
-    except NgcOpenError as exc:
-        # rs274 could not open the program: it reports and exits without resetting.
+        handle = _open_program(o.program or "")
+    except OSError:
         sink.flush()
-        report(err, exc)
+        err.write(f"Unable to open file <{name}>\n\n")
         return 1
-    except NgcError as exc:
-        failed = True
-        sink.flush()
-        report(err, exc)
+    with handle, Progress(err, name, descriptor(handle),
+                          active=is_terminal(err) and not terminal_output) as progress:
+        failed = _execute(interp, progress.lines(handle), name, sink, err)
+    if failed is None:
+        return 1
     interp.label = "N..... "
     if ini is None:
         interp.emit(ops.OnReset())
@@ -184,6 +290,23 @@ def _interpret(o: Rs274Options, handle: TextIO, settings: Rs274ngcSettings, ini:
     return 1 if failed else 0
 
 
+def _execute(interp: Interpreter, lines: Iterable[str], name: str, sink: TextSink,
+             err: TextIO) -> bool | None:
+    """Run the program: ``False`` if it ran to its end, ``True`` after an error, ``None`` if
+    there was nothing to run (rs274 then reports and exits without resetting)."""
+    try:
+        interp.run(lines, file=name, on_open=lambda: interp.emit(ops.OnReset()))
+    except NgcOpenError as exc:
+        sink.flush()
+        report(err, exc)
+        return None
+    except NgcError as exc:
+        sink.flush()
+        report(err, exc)
+        return True
+    return False
+
+
 def _settings(o: Rs274Options, err: TextIO) -> tuple[Rs274ngcSettings, Ini | None]:
     """The INI file (``-i``) and its settings; rs274 reports an INI file it cannot read."""
     if o.ini_file is None:
@@ -191,22 +314,22 @@ def _settings(o: Rs274Options, err: TextIO) -> tuple[Rs274ngcSettings, Ini | Non
     try:
         ini = Ini.read(o.ini_file)
     except NgcConfigError as exc:
-        err.write(f"{exc.message}\n")
+        err.write(f"{_as_read(exc.message)}\n")
         return Rs274ngcSettings(), None
     settings = Rs274ngcSettings.from_ini(ini, os.getcwd())
     for message in settings.messages:
-        err.write(f"{message}\n\n")
+        err.write(f"{_as_read(message)}\n\n")
     return settings, ini
 
 
 def _save(path: str, interp: Interpreter, err: TextIO) -> None:
     """Write the parameter file (atomically); rs274 reports a failed link or rename and goes on."""
     for message in write_var_file(path, interp.params.numbered):
-        err.write(f"{message}\n")
+        err.write(f"{_as_read(message)}\n")
 
 
-def report(err: TextIO, exc: NgcError) -> None:
+def report(err: TextIO, exc: NgcError, message: str | None = None) -> None:
     """rs274's error report: the message, then the source line."""
-    err.write(f"{exc.message}\n")
+    err.write(f"{exc.message if message is None else message}\n")
     if exc.source is not None:
         err.write(f"{exc.source}\n")
