@@ -80,8 +80,8 @@ def test_max_iterations_before_the_file(capsys: pytest.CaptureFixture[str], work
     code, _, err = run(capsys, command, "--max-iterations", "100", "loop.ngc")
     assert code == 1
     assert err.splitlines()[0] == (
-        "loop.ngc:2:1: Loop iteration limit (100) reached: the program looks like it runs "
-        "forever (raise the limit with --max-iterations)"
+        "loop.ngc:2:1: Work limit reached: 100 loop iterations and subroutine calls; the program "
+        "looks like it runs forever (raise the limit with --max-iterations)"
     )
 
 
@@ -533,7 +533,7 @@ def test_rs274_max_iterations(capsys: pytest.CaptureFixture[str], work: Path) ->
     (work / "loop.ngc").write_text(LOOP)
     code, _, err = run(capsys, "rs274", "-g", "--max-iterations", "10", "loop.ngc")
     assert code == 1
-    assert "Loop iteration limit (10) reached" in err
+    assert "Work limit reached: 10 loop iterations" in err
     code, _, err = run(capsys, "rs274", "-g", "--max-iterations=x", "loop.ngc")
     assert code == 1
     assert err.startswith("ngc rs274: --max-iterations needs a positive number\n")

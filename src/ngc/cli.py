@@ -176,7 +176,8 @@ def _machine_options() -> argparse.ArgumentParser:
                        help="read the parameter file (only ngc rs274 writes it back)")
     group.add_argument("--max-iterations", metavar="N", type=_positive,
                        default=DEFAULT_MAX_ITERATIONS,
-                       help="the loop iterations a run may make before it stops with an error "
+                       help="the work budget: loop iterations and subroutine calls a run may make "
+                       "before it stops with an error "
                        f"(default {DEFAULT_MAX_ITERATIONS})")
     return parent
 

@@ -14,7 +14,8 @@
     :meth:`Interpreter.load_parameters`.  Only ``rs274`` writes it back; ``canon`` and ``check``
     read it only.
 ``--max-iterations N``
-    the loop iterations a run may make before it stops with an error (a runaway loop).
+    the work budget: loop iterations and subroutine calls a run may make before it stops with
+    an error (a runaway program).
 
 ``rs274`` reports its inputs the way rs274 does; ``canon`` and ``check`` load them strictly with
 :func:`load_setup`: a file given to ``-i``, ``-t`` or ``-v`` must be a regular file they can open

@@ -8,7 +8,7 @@ any others: rs274 stops on it with ``Bad character '\\357' used`` and so does ``
 (``ngc canon`` and ``ngc check`` skip it).
 
 Differences, all on purpose: ``-h``/``--help`` prints :data:`HELP` on stdout (rs274 has no such
-option), ``--max-iterations N`` bounds the loop iterations of a run, and on a terminal a long run
+option), ``--max-iterations N`` bounds the loop iterations and calls of a run, and on a terminal a long run
 shows a progress line on stderr (:mod:`ngc.progress`; never when stderr is not a terminal, so
 the output stays byte-exact).  ``-n``, ``-s`` and interactive mode are parsed but not modelled:
 ngc always runs the program in batch mode and stops at the first error.
@@ -76,8 +76,8 @@ Options (rs274's own; options may also follow the file names):
 
 Options of ngc:
     --max-iterations N
-              the loop iterations a run may make before it stops with an error (a runaway
-              loop); default {DEFAULT_MAX_ITERATIONS}
+              the work budget of a run: loop iterations and subroutine calls it may make
+              before it stops with an error (a runaway program); default {DEFAULT_MAX_ITERATIONS}
     -h, --help
               print this help and exit
 
