@@ -214,7 +214,7 @@ def test_rs274_runs(capsys: pytest.CaptureFixture[str], good: Path) -> None:
 def test_internal_error_is_not_a_traceback(
     capsys: pytest.CaptureFixture[str], good: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def broken(*args: object) -> None:
+    def broken(*args: object, **kwargs: object) -> None:
         raise ZeroDivisionError("float division by zero")
 
     monkeypatch.setattr(report, "check_lines", broken)
@@ -226,7 +226,7 @@ def test_internal_error_is_not_a_traceback(
 def test_keyboard_interrupt_is_quiet(
     capsys: pytest.CaptureFixture[str], good: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def interrupted(*args: object) -> None:
+    def interrupted(*args: object, **kwargs: object) -> None:
         raise KeyboardInterrupt
 
     monkeypatch.setattr(report, "check_lines", interrupted)
@@ -237,7 +237,7 @@ def test_keyboard_interrupt_is_quiet(
 def test_escaping_ngc_error_is_reported_normally(
     capsys: pytest.CaptureFixture[str], good: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def failing(*args: object) -> None:
+    def failing(*args: object, **kwargs: object) -> None:
         raise NgcSemanticError("Bad thing", file="x.ngc", line=4, column=2, source="G1 X1")
 
     monkeypatch.setattr(report, "check_lines", failing)

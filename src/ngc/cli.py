@@ -32,6 +32,7 @@ from .canon.text import TextSink
 from .errors import NgcConfigError, NgcError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
+from .interp.source import ProgramReader, open_program
 from .options import MachineOptions, Setup, load_setup, new_interpreter, parse_positive
 from .progress import Progress, descriptor, is_terminal
 from .termination import Terminated, signals_raise
@@ -200,13 +201,14 @@ def _setup(command: str, options: argparse.Namespace) -> tuple[MachineOptions, S
     return machine, setup
 
 
-def _open_program(path: str) -> TextIO:
+def _open_program(path: str) -> ProgramReader:
     """A program file (``-``: standard input) as UTF-8 text: a leading byte-order mark skipped,
-    bytes that are not UTF-8 kept as surrogates, line ends as they are.  Raises ``OSError``."""
+    bytes that are not UTF-8 kept as surrogates, line ends as they are, read in rs274's pieces
+    (:mod:`ngc.interp.source`).  Raises ``OSError``."""
     if path == "-":
-        return open(sys.stdin.fileno(), encoding="utf-8-sig", errors="surrogateescape",
-                    newline="", closefd=False)
-    return open(path, encoding="utf-8-sig", errors="surrogateescape", newline="")
+        stdin = open(sys.stdin.fileno(), "rb", closefd=False)  # noqa: SIM115 (the reader closes it)
+        return ProgramReader(stdin, "utf-8", "surrogateescape", skip_bom=True)
+    return open_program(path, "utf-8", "surrogateescape", skip_bom=True)
 
 
 def _name(path: str) -> str:
@@ -214,7 +216,7 @@ def _name(path: str) -> str:
     return STDIN_NAME if path == "-" else os.fsencode(path).decode("utf-8", "surrogateescape")
 
 
-def _progress(name: str, handle: TextIO, *, output_to_terminal: bool) -> Progress:
+def _progress(name: str, handle: ProgramReader, *, output_to_terminal: bool) -> Progress:
     """The progress line of a program file: on stderr, if it is a terminal and stdout is not
     (``ngc canon`` on a terminal shows its output instead)."""
     active = is_terminal(sys.stderr) and not output_to_terminal
@@ -239,7 +241,7 @@ def run_canon(options: argparse.Namespace) -> int:
     with handle, _progress(name, handle, output_to_terminal=is_terminal(sys.stdout)) as progress:
         try:
             interp.startup()
-            interp.run(progress.lines(handle), file=name)
+            interp.run(progress.lines(handle), file=name, reader=handle)
         except NgcError as exc:
             _flush(sink)
             progress.close()
@@ -288,7 +290,7 @@ def run_check(options: argparse.Namespace) -> int:
             code = EXIT_USAGE
             continue
         with handle, _progress(name, handle, output_to_terminal=False) as progress:
-            result = report.check_lines(progress.lines(handle), name, quiet)
+            result = report.check_lines(progress.lines(handle), name, quiet, reader=handle)
         if result.error is not None:
             sys.stderr.write(result.error.render() + "\n")
             if code == EXIT_OK:

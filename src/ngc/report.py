@@ -21,6 +21,7 @@ from .canon import ops
 from .canon.ops import Op, Sink
 from .errors import NgcError
 from .interp.interpreter import Interpreter
+from .interp.source import ProgramReader, open_program
 
 MM_PER_UNIT = {"CANON_UNITS_MM": 1.0, "CANON_UNITS_INCHES": 25.4, "CANON_UNITS_CM": 10.0}
 UNIT_NAMES = {"CANON_UNITS_MM": "mm", "CANON_UNITS_INCHES": "inch", "CANON_UNITS_CM": "cm"}
@@ -344,6 +345,8 @@ def check_lines(
     lines: Iterable[str],
     name: str,
     new_interpreter: Callable[[Sink], Interpreter] = _quiet_interpreter,
+    *,
+    reader: ProgramReader | None = None,
 ) -> CheckResult:
     """Run a program, given as its lines, through an interpreter, keeping only a summary of its
     motion; ``name`` is the file name errors carry.  ``new_interpreter`` makes the interpreter
@@ -362,7 +365,7 @@ def check_lines(
     interp = new_interpreter(summarizer)
     interp.startup()
     try:
-        interp.run(counted, file=name)
+        interp.run(counted, file=name, reader=reader)
     except NgcError as exc:
         error = exc
     return CheckResult(path=name, lines=counted.total(), summary=summarizer.summary(),
@@ -390,8 +393,8 @@ def check_file(path: str | os.PathLike[str]) -> CheckResult:
     (1, 'Cannot do g1 with zero feed rate')
     """
     name = os.fspath(path)
-    with open(name, encoding="utf-8-sig", errors="surrogateescape", newline="") as handle:
-        return check_lines(handle, name)
+    with open_program(name, "utf-8", "surrogateescape", skip_bom=True) as reader:
+        return check_lines(reader, name, reader=reader)
 
 
 class _CountedLines:

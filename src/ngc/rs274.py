@@ -31,6 +31,7 @@ from .config.varfile import read_var_file, write_var_file
 from .errors import NgcConfigError, NgcError, NgcOpenError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
+from .interp.source import ProgramReader, open_program
 from .options import MachineOptions, Setup, new_interpreter, parse_positive
 from .progress import Progress, descriptor, is_terminal
 
@@ -214,13 +215,13 @@ def _as_read(text: str) -> str:
     return os.fsencode(text).decode("latin-1")
 
 
-def _open_program(path: str) -> TextIO:
-    """The program file, read as bytes (latin-1 maps each byte to one character); a directory
-    reads as an empty file, as it does for rs274.  Raises ``OSError``."""
+def _open_program(path: str) -> ProgramReader:
+    """The program file, read as bytes (latin-1 maps each byte to one character) in rs274's
+    pieces; a directory reads as an empty file, as it does for rs274.  Raises ``OSError``."""
     try:
-        return open(path, encoding="latin-1", newline="")
+        return open_program(path)
     except IsADirectoryError:
-        return io.StringIO()
+        return ProgramReader(io.BytesIO())
 
 
 def _run(argv: list[str], out: TextIO, err: TextIO, fast: bool = True) -> int:
@@ -277,7 +278,7 @@ def _interpret(o: Rs274Options, sink: TextSink, err: TextIO, fast: bool,
         return 1
     with handle, Progress(err, name, descriptor(handle),
                           active=is_terminal(err) and not terminal_output) as progress:
-        failed = _execute(interp, progress.lines(handle), name, sink, err)
+        failed = _execute(interp, progress.lines(handle), handle, name, sink, err)
     if failed is None:
         return 1
     interp.label = "N..... "
@@ -290,12 +291,12 @@ def _interpret(o: Rs274Options, sink: TextSink, err: TextIO, fast: bool,
     return 1 if failed else 0
 
 
-def _execute(interp: Interpreter, lines: Iterable[str], name: str, sink: TextSink,
-             err: TextIO) -> bool | None:
+def _execute(interp: Interpreter, lines: Iterable[str], reader: ProgramReader, name: str,
+             sink: TextSink, err: TextIO) -> bool | None:
     """Run the program: ``False`` if it ran to its end, ``True`` after an error, ``None`` if
     there was nothing to run (rs274 then reports and exits without resetting)."""
     try:
-        interp.run(lines, file=name, on_open=lambda: interp.emit(ops.OnReset()))
+        interp.run(lines, file=name, on_open=lambda: interp.emit(ops.OnReset()), reader=reader)
     except NgcOpenError as exc:
         sink.flush()
         report(err, exc)

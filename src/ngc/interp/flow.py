@@ -4,7 +4,7 @@ Plain programs stream: each line is read, executed and forgotten.  The first o-w
 / M99) switches the interpreter to this module's program counter, which runs over *bodies*: the
 lines of a file, kept as raw text until first executed and as compiled entries afterwards (a
 plain-words tuple or a parsed :class:`Block`), so a loop body is parsed once however often it
-runs.  The main program's body, the :class:`Tape`, goes on reading the open file as execution or a
+runs.  The main program's body, the *tape*, goes on reading the open file as execution or a
 search moves ahead; a subroutine runs in the body that holds its definition, as rs274 runs it in
 the file it was found in.
 
@@ -42,6 +42,7 @@ from ..language.oword import KEYWORDS, MAX_ARGS, NOTHING, PROGRAM, OWord, number
 from ..language.parser import Block, skim_oword
 from .fastpath import Compiled, Plain
 from .machine import Machine
+from .source import CACHE_LINES, CHECKPOINT, ProgramReader, open_program
 
 if TYPE_CHECKING:
     from .parameters import Parameters
@@ -58,6 +59,7 @@ class Host(Protocol):
     file: str | None
     percent: bool
     numbered: Iterator[tuple[int, str]]
+    reader: ProgramReader | None
 
     def execute(self, block: Block) -> None: ...
 
@@ -109,23 +111,88 @@ class Mark:
 
 
 class Body:
-    """The lines of one file from line ``first`` on."""
+    """The lines of one file from line ``first`` on, read as execution or a search reaches them.
 
-    __slots__ = ("file", "first", "lines")
+    Lines stay raw text until first executed, then compiled entries.  A body read from a file
+    that can be read again keeps only a bounded cache of them and, every :data:`CHECKPOINT` lines,
+    the byte position where the next line starts: any line is read again from there
+    (:mod:`.source`), so memory stays flat however long the file.  Other input is kept whole.
+    """
 
-    def __init__(self, file: str | None, first: int, lines: list[Entry]) -> None:
+    __slots__ = ("base", "cache", "count", "file", "first", "head", "interp", "numbered",
+                 "positions", "reader")
+
+    def __init__(self, interp: Host, file: str | None, first: int,
+                 numbered: Iterator[tuple[int, str]], reader: ProgramReader | None,
+                 head: Entry | None = None) -> None:
+        self.interp = interp
         self.file = file
         self.first = first
-        self.lines = lines
+        self.numbered = numbered
+        self.cache: dict[int, Entry] = {}
+        # The first line when it was read before the body began (the main program's first
+        # control line): kept for good, as it cannot be read again.
+        self.head = head
+        self.count = 0  # the lines read so far
+        if head is not None:
+            self.cache[first] = head
+            self.count = 1
+        self.reader = reader if reader is not None and reader.seekable else None
+        # positions[j]: where line base + j * CHECKPOINT starts in the file.
+        self.base = first + self.count
+        self.positions: list[int] = [] if self.reader is None else [self.reader.tell()]
 
     def fetch(self, number: int) -> Entry | None:
         """Line ``number`` (1-based in its file), or None past the end."""
-        i = number - self.first
-        return self.lines[i] if 0 <= i < len(self.lines) else None
+        entry = self.cache.get(number)
+        if entry is not None:
+            return entry
+        if number < self.first:
+            return None
+        if number >= self.first + self.count:
+            return self._read_to(number)
+        return self._read_again(number)
+
+    def _read_to(self, number: int) -> Entry | None:
+        last = self.first + self.count - 1
+        reader = self.reader
+        checked = self.interp.checked_line
+        while last < number:
+            item = next(self.numbered, None)
+            if item is None:
+                return None
+            last += 1
+            self.count += 1
+            raw = checked(item[1], last)
+            if reader is not None and (last + 1 - self.base) % CHECKPOINT == 0:
+                self.positions.append(reader.tell())
+            self.keep(last, raw)
+        return self.cache.get(number)
+
+    def _read_again(self, number: int) -> Entry | None:
+        """A line read before whose entry the cache no longer holds."""
+        assert self.reader is not None
+        j = (number - self.base) // CHECKPOINT
+        start = self.base + j * CHECKPOINT
+        lines = self.reader.read_at(self.positions[j], number - start + 1)
+        checked = self.interp.checked_line
+        for i, raw in enumerate(lines):
+            if start + i not in self.cache:
+                self.keep(start + i, checked(raw, start + i))
+        return self.cache.get(number)
+
+    def keep(self, number: int, entry: Entry) -> None:
+        """Hold line ``number``'s entry; a body that can read again starts over when full."""
+        cache = self.cache
+        if self.reader is not None and len(cache) >= CACHE_LINES:
+            cache.clear()
+            if self.head is not None:
+                cache[self.first] = self.head
+        cache[number] = entry
 
     def last(self) -> int:
-        """The number of the last line held (read so far)."""
-        return self.first + len(self.lines) - 1
+        """The number of the last line read so far."""
+        return self.first + self.count - 1
 
     def source(self, number: int) -> str:
         entry = self.fetch(number)
@@ -138,29 +205,6 @@ class Body:
         if isinstance(entry, Compiled):
             return entry.block.source
         return str(entry[3])
-
-
-class Tape(Body):
-    """The main program from its first control line on, read from the open file as needed."""
-
-    __slots__ = ("interp", "numbered")
-
-    def __init__(self, interp: Host, numbered: Iterator[tuple[int, str]], first: int,
-                 block: Block) -> None:
-        super().__init__(interp.file, first, [block])
-        self.interp = interp
-        self.numbered = numbered
-
-    def fetch(self, number: int) -> Entry | None:
-        i = number - self.first
-        lines = self.lines
-        while i >= len(lines):
-            item = next(self.numbered, None)
-            if item is None:
-                return None
-            read, raw = item
-            lines.append(self.interp.checked_line(raw, read))
-        return lines[i] if i >= 0 else None
 
 
 class Sub:
@@ -224,7 +268,8 @@ class Flow:
         self.interp = interp
         self.subs: dict[str, Sub] = {}
         self.frames: list[Frame] = []
-        self.tape: Tape | None = None
+        self.tape: Body | None = None
+        self.opened: list[ProgramReader] = []
         self.subroutine_path: list[str] = []
         self.fanuc_enabled = True
         self.max_iterations = DEFAULT_MAX_ITERATIONS
@@ -247,9 +292,13 @@ class Flow:
         }
 
     # -- running --------------------------------------------------------------------------------
-    def enter(self, block: Block, numbered: Iterator[tuple[int, str]]) -> None:
-        """The first control line: from here on the program counter runs the program."""
-        self.tape = Tape(self.interp, numbered, block.line, block)
+    def enter(self, block: Block, numbered: Iterator[tuple[int, str]],
+              reader: ProgramReader | None = None) -> None:
+        """The first control line: from here on the program counter runs the program.
+
+        ``reader`` is the file the lines come from, just after this line, if it has one.
+        """
+        self.tape = Body(self.interp, self.interp.file, block.line, numbered, reader, head=block)
         self.frames = [Frame(self.tape, block.line, None)]
 
     def run(self) -> None:
@@ -302,7 +351,7 @@ class Flow:
             entry = self.interp.compile_line(raw, number)
         except NgcError as err:
             raise err.locate(file=body.file, line=number, source=raw.rstrip(C_SPACE)) from None
-        body.lines[number - body.first] = entry
+        body.keep(number, entry)
         return entry
 
     def end_of_file(self, f: Frame) -> NoReturn:
@@ -680,13 +729,19 @@ class Flow:
         return None
 
     def load(self, path: str) -> Body:
+        """A subroutine file, read as its lines are needed (it stays open until ``close``)."""
         try:
-            with open(path, encoding="latin-1", newline="") as handle:
-                lines: list[Entry] = [
-                    self.interp.checked_line(raw, n) for n, raw in enumerate(handle, 1)]
+            reader = open_program(path)
         except OSError as exc:
             raise NgcRuntimeError(f"Unable to open file {path}: {exc.strerror}") from None
-        return Body(path, 1, lines)
+        self.opened.append(reader)
+        return Body(self.interp, path, 1, enumerate(reader, 1), reader)
+
+    def close(self) -> None:
+        """Close the subroutine files the run opened."""
+        for reader in self.opened:
+            reader.close()
+        self.opened.clear()
 
     def _return(self, f: Frame, block: Block, ow: OWord) -> None:
         it = self.interp
@@ -737,7 +792,7 @@ class Flow:
     def fanuc(self, block: Block, code: int, p: float | None, loops: float | None) -> bool:
         """Run ``M98 P- L-`` or ``M99``; False when M99 ends the main program (like M2)."""
         if self.tape is None:
-            self.enter(block, self.interp.numbered)
+            self.enter(block, self.interp.numbered, self.interp.reader)
             self.frames[-1].pc = block.line + 1
         f = self.frames[-1]
         if code == 99:

@@ -26,6 +26,7 @@ from .handlers import coordinates, program
 from .machine import Machine
 from .parameters import COORD_SYSTEM, DEBUG_ENABLE, G92_APPLIED, Parameters
 from .resolve import Resolved, resolve
+from .source import ProgramReader
 from .state import State
 
 if TYPE_CHECKING:
@@ -77,6 +78,7 @@ class Interpreter:
         self.flow.max_iterations = max_iterations
         self.flow.max_call_depth = max_call_depth
         self.numbered: Iterator[tuple[int, str]] = iter(())
+        self.reader: ProgramReader | None = None
 
     # The machine's running block and program files, as attributes of the interpreter too.
     @property
@@ -112,8 +114,9 @@ class Interpreter:
         return self.machine.probe_log
 
     def close(self) -> None:
-        """Release what the program opened (the log and probe log files)."""
+        """Release what the program opened (log files, subroutine files)."""
         self.machine.close()
+        self.flow.close()
 
     def emit(self, op: Op) -> None:
         self.machine.emit(op)
@@ -154,8 +157,14 @@ class Interpreter:
         lines: Iterable[str],
         file: str | None = None,
         on_open: Callable[[], None] | None = None,
+        *,
+        reader: ProgramReader | None = None,
     ) -> None:
         """Execute a program line by line until M2/M30, the closing ``%`` or an error.
+
+        ``lines`` may be a :class:`~ngc.interp.source.ProgramReader`, or lines read from one
+        given as ``reader`` (a progress display wraps them, say): control flow then reads lines
+        again from the file instead of keeping them, so memory stays flat in the program's length.
 
         The program is "open" once its first non-blank line is read (``on_open`` is called then);
         an empty program raises :class:`NgcOpenError`.  Raises :class:`NgcError` (with file and
@@ -163,6 +172,9 @@ class Interpreter:
         on, :mod:`.flow` runs the rest of the program.  Files the program opened (logs) are
         closed at the end, whatever the outcome.
         """
+        if reader is None and isinstance(lines, ProgramReader):
+            reader = lines
+        self.reader = reader
         try:
             self._run(lines, file, on_open)
         finally:
@@ -297,7 +309,7 @@ class Interpreter:
         if block.delete and self.state.blocks_deleted:
             return
         if block.oword is not None:
-            self.flow.enter(block, self.numbered)
+            self.flow.enter(block, self.numbered, self.reader)
             return
         m = self.machine
         m.label = block.label
