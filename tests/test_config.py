@@ -460,6 +460,8 @@ def test_subroutine_path(tmp_path: Path) -> None:
     )
     absolute = settings(f"[RS274NGC]\nSUBROUTINE_PATH = {tmp_path / 'd3'}\n", "/")
     assert absolute.subroutine_path == (str(tmp_path / "d3"),)
+    with_nul = settings("[RS274NGC]\nSUBROUTINE_PATH = d\0:d1\n", str(tmp_path))
+    assert with_nul.subroutine_path == (str(tmp_path / "d1"),)  # a NUL byte: no such folder
 
 
 def test_corpus_ini_files() -> None:

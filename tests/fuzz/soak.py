@@ -237,8 +237,11 @@ def cli_command(rng: random.Random, variant: CliVariant, work: Path, data: bytes
     for flag in ("-b", "-s"):
         if flag in variant.options and rng.random() < 0.15:
             args.append(flag)
-    if "--max-iterations" in variant.options and rng.random() < 0.4:
-        args += ["--max-iterations", str(rng.choice((1, 2, 10, 100, 1000, 100000)))]
+    if "--max-iterations" in variant.options:
+        # Always a budget: at the default (10,000,000) a runaway loop runs for tens of seconds
+        # by design, where the time limit is 2 s.
+        budget = rng.choice((1, 2, 10, 100, 1000)) if rng.random() < 0.4 else hostile.MAX_ITERATIONS
+        args += ["--max-iterations", str(budget)]
     for flag, file, template in (("-t", "tools.tbl", TOOL_TABLE), ("-v", "vars.var", VAR_FILE),
                                  ("-i", "x.ini", INI_FILE)):
         if flag in variant.options and rng.random() < 0.2:

@@ -311,7 +311,7 @@ def _search_dirs(value: str | None, cwd: str, limit: int) -> tuple[str, ...]:
             continue
         try:
             dirs.append(os.path.realpath(os.path.join(cwd, entry), strict=True))
-        except OSError:
+        except (OSError, ValueError):  # no such folder; a NUL byte in the entry
             continue
         if len(dirs) == limit:
             break
