@@ -291,6 +291,16 @@ class Flow:
             for keyword in (*KEYWORDS, PROGRAM, NOTHING)
         }
 
+    def fresh(self) -> Flow:
+        """A flow for the next program run by the same interpreter: its settings, nothing of
+        the last program (its subroutines, labels, loop counts, work done)."""
+        flow = Flow(self.interp)
+        flow.subroutine_path = self.subroutine_path
+        flow.fanuc_enabled = self.fanuc_enabled
+        flow.max_iterations = self.max_iterations
+        flow.max_call_depth = self.max_call_depth
+        return flow
+
     # -- running --------------------------------------------------------------------------------
     def enter(self, block: Block, numbered: Iterator[tuple[int, str]],
               reader: ProgramReader | None = None) -> None:

@@ -79,6 +79,7 @@ class Interpreter:
         self.flow.max_call_depth = max_call_depth
         self.numbered: Iterator[tuple[int, str]] = iter(())
         self.reader: ProgramReader | None = None
+        self.started = False  # a program has run (or begun to)
 
     # The machine's running block and program files, as attributes of the interpreter too.
     @property
@@ -188,6 +189,13 @@ class Interpreter:
     ) -> None:
         self.file = file
         self.ended = self.finished = False
+        if self.started:
+            # Another program on the same machine: its modes and parameters carry over, the
+            # last program's control flow does not.
+            self.flow = self.flow.fresh()
+            self.machine.state.call_level = 0
+            del self.params.locals[1:]  # the scopes of calls an error left
+        self.started = True
         numbered = enumerate(lines, 1)
         self.numbered = numbered
         number, raw = 0, ""
