@@ -986,7 +986,35 @@ def mu_drop_word(g: Gen, lines: list[str]) -> None:
         lines[i] = " ".join(parts)
 
 
+# Values that are infinite or not a number, or that hide one (rs274 checks each value it reads,
+# not the operators inside a bracket, nor a function's argument).
+NON_FINITE = ["EXP[710]", "[EXP[709]*10]", "[0**-1]", "[1 MOD 0]", "[EXP[709]*10*0]",
+              "SIN[EXP[709]*10]", "FIX[EXP[709]*10]", "ROUND[EXP[709]*10]", "[10**400 GT 0]",
+              "ABS[EXP[709]*10]", "[EXP[709]*10*0 LT 1]", "ATAN[EXP[709]*10]/[1]", "EXP[709]",
+              "[2**2000 - 2**2000]", "FUP[-EXP[709]*10]", "[EXP[709.78]]"]
+
+
+def mu_non_finite(g: Gen, lines: list[str]) -> None:
+    v = g.rng.choice(NON_FINITE)
+    _insert(g, lines, g.rng.choice([
+        f"#1 = {v}", f"G0 X{v}", f"G1 X[{v} + 1] F10", f"#<nf> = [{v} GT 0]", f"G[{v}]",
+        f"M[{v}]", f"o1 if [{v}]\no1 endif", f"o2 repeat [{v}]\nG0 X1\no2 endrepeat",
+        f"o77 sub\n(debug,#1 %d #1)\no77 endsub\no77 call [{v}]", f"#2 = [{v} * 0]",
+        f"G0 X[[{v}]]", f"#3 = EXISTS[#[{v}]]", f"G10 L2 P2 R{v}\nG0 X1"]))
+
+
+def mu_read_order(g: Gen, lines: list[str]) -> None:
+    """A value that fails and a read error on one line, in either order."""
+    bad_value = g.rng.choice(["X[1/0]", "X#<nope>", "Y[SQRT[-1]]", "Z[EXP[710]]", "X[ACOS[2]]",
+                              "#[1/0]=1", "#1=[1/0]", "X[[1/0] + SQRT[-1]]", "X[1 + 2/0 * LN[0]]"])
+    bad_read = g.rng.choice(["G0 G1", "X2", "Y[1+", "M3 M4", "Q", "#5420=1", "G1.7", "#<_a>=1"])
+    parts = [bad_value, bad_read] if g.rng.random() < 0.6 else [bad_read, bad_value]
+    _insert(g, lines, " ".join(parts))
+
+
 MUTATIONS: list[tuple[float, Callable[[Gen, list[str]], None]]] = [
+    (2, mu_non_finite),
+    (2, mu_read_order),
     (3, mu_unknown_code),
     (3, mu_modal_conflict),
     (2, mu_repeated_word),
