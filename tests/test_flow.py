@@ -155,3 +155,13 @@ def test_a_subroutine_name_may_name_a_folder_inside(
     monkeypatch.chdir(tmp_path)
     interp = run("o<lib/part> call\nM2\n")
     assert interp.state.pos[0] == 7.0
+
+
+def test_a_subroutine_file_name_is_the_bytes_the_program_holds(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "€.ngc").write_text("o<€> sub\nG0 X4\no<€> endsub\n")
+    (tmp_path / "prog.ngc").write_text("o<€> call\nM2\n")
+    out, err = io.StringIO(), io.StringIO()
+    assert rs274.run(["-g", "prog.ngc"], stdout=out, stderr=err) == 0, err.getvalue()
+    assert "STRAIGHT_TRAVERSE(4.0000" in out.getvalue()

@@ -504,3 +504,11 @@ def test_write_files_false_opens_no_fifo(cwd: Path) -> None:
     interp = Interpreter(ListSink(), write_files=False)
     interp.run(["(LOGOPEN,fifo)", "(LOGAPPEND,fifo)", "(PROBEOPEN fifo)", "M2"])
     assert (interp.machine.log, interp.machine.probe_log) == (None, None)
+
+
+def test_a_file_name_is_the_bytes_the_program_holds(cwd: Path) -> None:
+    # rs274 reads the program as bytes: "€" is three of them, and names the file "€.log".
+    Path("prog.ngc").write_bytes("(LOGOPEN,€.log)\n(LOG,hi)\n(LOGCLOSE)\nM2\n".encode())
+    out, err = io.StringIO(), io.StringIO()
+    assert rs274.run(["-g", "prog.ngc"], stdout=out, stderr=err) == 0
+    assert (cwd / "€.log").read_text() == "hi\n"

@@ -727,21 +727,21 @@ class Flow:
         A name is a path inside those folders: one that is absolute or climbs out of them
         (``o<../x> call``) is refused, so program text reads no file elsewhere.
         """
-        name = label + ".ngc"
+        shown = label + ".ngc"  # as the program has it, for messages
+        name = self.interp.machine.file_name(shown)  # as the operating system takes it
         if os.path.isabs(name) or os.path.normpath(name).split(os.sep)[0] == os.pardir:
             raise NgcSemanticError(
-                f"Subroutine file '{name}' is outside the working directory and the subroutine "
+                f"Subroutine file '{shown}' is outside the working directory and the subroutine "
                 "path")
         for folder in (".", *self.subroutine_path):
-            path = name if folder == "." else os.path.join(folder, name)
-            if os.path.isfile(path):
-                return path
+            if os.path.isfile(name if folder == "." else os.path.join(folder, name)):
+                return shown if folder == "." else os.path.join(folder, shown)
         return None
 
     def load(self, path: str) -> Body:
         """A subroutine file, read as its lines are needed (it stays open until ``close``)."""
         try:
-            reader = open_program(path)
+            reader = open_program(self.interp.machine.file_name(path))
         except OSError as exc:
             raise NgcRuntimeError(f"Unable to open file {path}: {exc.strerror}") from None
         self.opened.append(reader)

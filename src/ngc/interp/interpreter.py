@@ -176,6 +176,7 @@ class Interpreter:
         if reader is None and isinstance(lines, ProgramReader):
             reader = lines
         self.reader = reader
+        self.machine.encoding = None if reader is None else (reader.encoding, reader.errors)
         try:
             self._run(lines, file, on_open)
         finally:

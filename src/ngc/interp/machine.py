@@ -7,6 +7,7 @@ it runs, so every operation a handler emits carries its block's N column and sou
 
 from __future__ import annotations
 
+import os
 from typing import TYPE_CHECKING, TextIO
 
 from .parameters import COORD_SYSTEM, Parameters
@@ -19,8 +20,8 @@ if TYPE_CHECKING:
 class Machine:
     """State, parameters, the sink, and the files a program opens (logs)."""
 
-    __slots__ = ("ended", "label", "line", "log", "params", "probe_log", "sink", "state",
-                 "write_files")
+    __slots__ = ("encoding", "ended", "label", "line", "log", "params", "probe_log", "sink",
+                 "state", "write_files")
 
     def __init__(self, sink: Sink, write_files: bool = True) -> None:
         self.sink = sink
@@ -37,6 +38,19 @@ class Machine:
         # False: LOGOPEN, LOGAPPEND and PROBEOPEN emit their calls but open no file (``ngc check``
         # writes nothing to disk).
         self.write_files = write_files
+        # How the program's text was decoded from its file's bytes (encoding, errors), so that a
+        # file name in it names the file those bytes name; None: text given as str.
+        self.encoding: tuple[str, str] | None = None
+
+    def file_name(self, text: str) -> str:
+        """A file name written in the program, as the operating system is to be given it: the
+        bytes the program holds (``(LOGOPEN,€.log)`` in a file read as latin-1 names ``€.log``)."""
+        if self.encoding is None:
+            return text
+        try:
+            return os.fsdecode(text.encode(*self.encoding))
+        except UnicodeError:
+            return text
 
     def emit(self, op: Op) -> None:
         self.sink.emit(op, self.label, self.line)

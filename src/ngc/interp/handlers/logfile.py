@@ -54,7 +54,7 @@ def log_open(it: Machine, name: str, append: bool) -> None:
     if not it.write_files:
         it.emit(ops.LogAppend(name) if append else ops.LogOpen(name))
         return
-    handle = _open("LOGAPPEND" if append else "LOGOPEN", name, "a" if append else "w")
+    handle = _open(it, "LOGAPPEND" if append else "LOGOPEN", name, "a" if append else "w")
     if it.log is not None:
         it.log.close()
     it.log = handle
@@ -88,7 +88,7 @@ def probe_comment(it: Machine, text: str) -> None:
         return
     if not it.write_files:
         return
-    handle = _open("PROBEOPEN", rest, "w")
+    handle = _open(it, "PROBEOPEN", rest, "w")
     _close_probe_log(it)
     it.probe_log = handle
 
@@ -105,9 +105,9 @@ def _close_probe_log(it: Machine) -> None:
         it.probe_log = None
 
 
-def _open(command: str, name: str, mode: Literal["w", "a"]) -> TextIO:
+def _open(it: Machine, command: str, name: str, mode: Literal["w", "a"]) -> TextIO:
     """Open ``name`` for writing, refusing names outside the working directory."""
-    path = confined_path(command, name)
+    path = confined_path(command, it.file_name(name))
     return open(path, mode, encoding="latin-1", errors="replace", newline="",
                 opener=lambda resolved, _flags: open_log(command, name, resolved, mode == "a"))
 
