@@ -63,13 +63,13 @@ class Host(Protocol):
 
     def execute(self, block: Block) -> None: ...
 
-    def run_plain(self, w: dict[str, float], code: int | None) -> None: ...
+    def _run_plain(self, w: dict[str, float], code: int | None) -> None: ...
 
-    def checked_line(self, raw: str, number: int) -> str: ...
+    def _checked_line(self, raw: str, number: int) -> str: ...
 
-    def compile_line(self, raw: str, number: int) -> Plain | Block | Compiled: ...
+    def _compile_line(self, raw: str, number: int) -> Plain | Block | Compiled: ...
 
-    def finish_percent(self) -> None: ...
+    def _finish_percent(self) -> None: ...
 # Call levels rs274 allows below the main program.
 MAX_CALL_DEPTH = 9
 # The work budget of one run: loop iterations (endwhile, endrepeat, do-while, continue, M98 L
@@ -156,7 +156,7 @@ class Body:
     def _read_to(self, number: int) -> Entry | None:
         last = self.first + self.count - 1
         reader = self.reader
-        checked = self.interp.checked_line
+        checked = self.interp._checked_line
         while last < number:
             item = next(self.numbered, None)
             if item is None:
@@ -175,7 +175,7 @@ class Body:
         j = (number - self.base) // CHECKPOINT
         start = self.base + j * CHECKPOINT
         lines = self.reader.read_at(self.positions[j], number - start + 1)
-        checked = self.interp.checked_line
+        checked = self.interp._checked_line
         for i, raw in enumerate(lines):
             if start + i not in self.cache:
                 self.keep(start + i, checked(raw, start + i))
@@ -317,7 +317,7 @@ class Flow:
         m = it.machine
         frames = self.frames
         execute = it.execute
-        plain = it.run_plain
+        plain = it._run_plain
         st = m.state
         while True:
             f = frames[-1]
@@ -328,7 +328,7 @@ class Flow:
             f.pc = number + 1
             if entry.__class__ is str:
                 if it.percent and entry.strip() == "%":
-                    it.finish_percent()
+                    it._finish_percent()
                     return
                 entry = self.compile(f.body, number, entry)
             if entry.__class__ is tuple:
@@ -358,7 +358,7 @@ class Flow:
     def compile(self, body: Body, number: int, raw: str) -> Plain | Block | Compiled:
         """Read a line once; the compiled entry replaces the raw text in its body."""
         try:
-            entry = self.interp.compile_line(raw, number)
+            entry = self.interp._compile_line(raw, number)
         except NgcError as err:
             raise err.locate(file=body.file, line=number, source=raw.rstrip(C_SPACE)) from None
         body.keep(number, entry)
@@ -454,7 +454,7 @@ class Flow:
                 continue
             if isinstance(entry, str):
                 if it.percent and body is self.tape and entry.strip() == "%":
-                    it.finish_percent()
+                    it._finish_percent()
                     prefix = "O#" if mode == BRANCH else "O"
                     raise NgcProgramError(f"Failed to find sub '{prefix}{label}' before EOF",
                                           file=body.file, line=number, source=entry.rstrip(C_SPACE))

@@ -224,7 +224,7 @@ class Interpreter:
                 if "\x00" in raw or len(raw) > MAX_LINE:
                     raw = self._checked(raw, number, opening=False)
                 if percent and raw.strip() == "%":
-                    self.finish_percent()
+                    self._finish_percent()
                     return
                 if line is None or not line(raw, number):
                     self.execute_line(raw, number)
@@ -261,13 +261,13 @@ class Interpreter:
         self.label = "N..... "
         self.emit(ops.Comment("interpreter: percent sign missing from end of file"))
 
-    def finish_percent(self) -> None:
+    def _finish_percent(self) -> None:
         """The closing ``%`` of a ``%``-delimited program."""
         self.label = "N..... "
         self.emit(ops.Finish())
         self.ended = self.finished = True
 
-    def checked_line(self, raw: str, number: int) -> str:
+    def _checked_line(self, raw: str, number: int) -> str:
         """A line read after the program opened (see :meth:`_checked`)."""
         raw = raw.rstrip("\n")
         if "\x00" in raw or len(raw) > MAX_LINE:
@@ -292,7 +292,7 @@ class Interpreter:
             raise err.locate(file=self.file, line=number, source=raw.rstrip(C_SPACE)) from None
         self.execute_line(raw, number)
 
-    def compile_line(self, raw: str, number: int) -> Plain | Block | Compiled:
+    def _compile_line(self, raw: str, number: int) -> Plain | Block | Compiled:
         """A line read once for running many times (a loop or subroutine body)."""
         if self.fast is None:
             return self.parse(raw, number)
@@ -337,18 +337,18 @@ class Interpreter:
                     return  # parameter settings only
             check(self.state, r, self.table)
             if codes.M_USER in r.m and r.m[codes.M_USER] in (98, 99):
-                self.convert_fanuc(block, r)
+                self._convert_fanuc(block, r)
                 return
             self.dispatcher.convert(m, r)
         except NgcError as err:
             raise err.locate(file=self.file, line=block.line, source=block.source) from None
 
-    def run_plain(self, w: dict[str, float], code: int | None) -> None:
+    def _run_plain(self, w: dict[str, float], code: int | None) -> None:
         """A compiled plain line (see :meth:`FastPath.convert`)."""
         assert self.fast is not None
         self.fast.convert(w, code)
 
-    def convert_fanuc(self, block: Block, r: Resolved) -> None:
+    def _convert_fanuc(self, block: Block, r: Resolved) -> None:
         """M98 calls at once (the rest of its line is not run); M99 runs its line, then returns."""
         code = r.m[codes.M_USER]
         if code == 98:
