@@ -71,7 +71,7 @@ def _polar_end(pos: list[float], w: dict[str, float], absolute: bool) -> list[fl
     end = relative_end(pos, w) if not absolute else [
         pos[0], pos[1], w.get("z", pos[2]), w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])
     ]
-    t = angle * math.pi / 180.0
+    t = math.radians(angle)
     end[0] = radius * math.cos(t)
     end[1] = radius * math.sin(t)
     return end
@@ -121,9 +121,12 @@ def _check_feed(it: Machine, w: dict[str, float], name: str) -> None:
 
 
 def _line_length(a: list[float], b: list[float]) -> float:
-    d = math.sqrt((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2 + (b[2] - a[2]) ** 2)
+    """As C computes it: a length too large for a double is infinite (its rate prints ``inf``)."""
+    dx, dy, dz = b[0] - a[0], b[1] - a[1], b[2] - a[2]
+    d = math.sqrt(dx * dx + dy * dy + dz * dz)
     if d == 0.0:
-        d = math.sqrt((b[3] - a[3]) ** 2 + (b[4] - a[4]) ** 2 + (b[5] - a[5]) ** 2)
+        da, db, dc = b[3] - a[3], b[4] - a[4], b[5] - a[5]
+        d = math.sqrt(da * da + db * db + dc * dc)
     return d
 
 
