@@ -11,6 +11,7 @@ import pytest
 from ngc import rs274
 from ngc.canon.jsonl import ListSink
 from ngc.errors import NgcRuntimeError, NgcSemanticError
+from ngc.interp.flow import Body
 from ngc.interp.interpreter import Interpreter
 
 
@@ -165,3 +166,31 @@ def test_a_subroutine_file_name_is_the_bytes_the_program_holds(
     out, err = io.StringIO(), io.StringIO()
     assert rs274.run(["-g", "prog.ngc"], stdout=out, stderr=err) == 0, err.getvalue()
     assert "STRAIGHT_TRAVERSE(4.0000" in out.getvalue()
+
+
+def _nested_whiles(depth: int) -> str:
+    lines = [f"#<v{k}>=0" for k in range(depth)]
+    for k in range(depth):
+        lines += [f"o{k + 1} while [#<v{k}> LT 1]", f"#<v{k}>=[#<v{k}>+1]"]
+    lines += [f"o{k + 1} endwhile" for k in reversed(range(depth))]
+    return "\n".join([*lines, "M2"]) + "\n"
+
+
+@pytest.mark.parametrize("depth", [50, 400])
+def test_skipping_nested_loops_reads_each_line_a_bounded_number_of_times(
+        depth: int, monkeypatch: pytest.MonkeyPatch) -> None:
+    # Each loop ends by skipping over the loops inside it: without leaping over what earlier
+    # skips found, the lines read grow with the square of the depth.
+    fetched = 0
+    fetch = Body.fetch
+
+    def counted(body: Body, number: int) -> object:
+        nonlocal fetched
+        fetched += 1
+        return fetch(body, number)
+
+    monkeypatch.setattr(Body, "fetch", counted)
+    program = _nested_whiles(depth)
+    interp = run(program)
+    assert interp.ended
+    assert fetched < 10 * program.count("\n")

@@ -136,3 +136,11 @@ def test_check_file_keeps_the_summary_up_to_the_error(tmp_path: Path) -> None:
 def test_check_file_missing(tmp_path: Path) -> None:
     with pytest.raises(FileNotFoundError):
         check_file(tmp_path / "nope.ngc")
+
+
+def test_an_infinite_value_is_an_error_not_an_infinite_length() -> None:
+    # It used to pass as "ok, rapid length: inf".
+    result = report.check_lines(["G0 X[EXP[710]]", "M2"], "huge.ngc")
+    assert not result.ok
+    assert result.error is not None
+    assert (result.error.line, result.error.message) == (1, "Calculation resulted in 'infinity'")
