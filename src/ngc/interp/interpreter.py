@@ -200,11 +200,16 @@ class Interpreter:
         numbered = enumerate(lines, 1)
         self.numbered = numbered
         number, raw = 0, ""
-        for number, raw in numbered:
-            raw = self._checked(raw, number, opening=True)
-            if raw.strip():
-                break
-        else:
+        opened = False
+        try:
+            for number, raw in numbered:
+                raw = self._checked(raw, number, opening=True)
+                if raw.strip():
+                    opened = True
+                    break
+        except NgcError as err:
+            raise err.locate(file=file, line=number + 1, source="") from None
+        if not opened:
             raise NgcOpenError("File ended with no percent sign", file=file, line=number,
                                source=raw.rstrip("\r\n"))
         if on_open is not None:

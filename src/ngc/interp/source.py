@@ -67,14 +67,18 @@ class ProgramReader:
         readline = self.handle.readline
         encoding, errors = self.encoding, self.errors
         full = 0
+        number = 0
         while True:
             piece = readline(LINE_BYTES)
             if not piece:
                 return
+            number += 1
             if len(piece) == LINE_BYTES and piece[-1] != 10:  # no newline: the buffer was full
                 full += 1
                 if full > MAX_PIECES:
-                    raise NgcSyntaxError("Command too long")
+                    text = piece.decode(encoding, errors)
+                    raise NgcSyntaxError("Command too long", line=number,
+                                         source=text.split("\0", 1)[0])
             else:
                 full = 0
             yield piece.decode(encoding, errors)
