@@ -316,19 +316,6 @@ def atan2_degrees(y: float, x: float) -> float:
     return finite(math.degrees(math.atan2(y, x)))
 
 
-def _checked_result(fn: Callable[[float], float]) -> Callable[[float], float]:
-    def run(x: float) -> float:
-        v = fn(x)
-        if v - v == 0.0:
-            return v
-        raise nonfinite(v)
-
-    return run
-
-
-# The functions as rs274 reads them: a result that is infinite or NaN stops the program.
-FUNCTIONS: dict[str, Callable[[float], float]] = {
-    name: _checked_result(fn) for name, fn in UNARY.items()}
 
 
 def as_expr(value: Value) -> Expr:
@@ -339,52 +326,79 @@ def as_expr(value: Value) -> Expr:
     return value
 
 
-def fold_binary(op: str, left: Value, right: Value) -> Value:
-    """Combine two operands; constant operands are folded now unless folding raises."""
-    return fold_binary_fn(BINARY[op], left, right)
+def fold_binary(op: str, left: Value, right: Value, check: bool = False) -> Value:
+    """Combine two operands; constant operands are folded now unless folding raises.  ``check``:
+    the result is a value rs274 checks (a bracket's), see :func:`finite`."""
+    return fold_binary_fn(BINARY[op], left, right, check)
 
 
-def fold_binary_fn(fn: Callable[[float, float], float], left: Value, right: Value) -> Value:
+def fold_binary_fn(fn: Callable[[float, float], float], left: Value, right: Value,
+                   check: bool = False) -> Value:
     """Combine two operands with ``fn``, folding constants unless that raises."""
     if isinstance(left, float) and isinstance(right, float):
         try:
-            return fn(left, right)
+            v = fn(left, right)
+            return finite(v) if check else v
         except NgcRuntimeError:
             x, y = left, right
-            return lambda p: fn(x, y)
+            return (lambda p: finite(fn(x, y))) if check else (lambda p: fn(x, y))
+    if not check:
+        if isinstance(right, float):
+            a, r = left, right
+            return lambda p: fn(a(p), r)  # type: ignore[operator]
+        if isinstance(left, float):
+            lv, b = left, right
+            return lambda p: fn(lv, b(p))
+        a = left
+        b = right
+        return lambda p: fn(a(p), b(p))
+    # The same, with the check inline (one call less per evaluation than a wrapper).
     if isinstance(right, float):
-        a, r = left, right
-        return lambda p: fn(a(p), r)  # type: ignore[operator]
+        ca, cr = left, right
+
+        def right_constant(p: ParamContext) -> float:
+            v = fn(ca(p), cr)  # type: ignore[operator]
+            if v - v == 0.0:
+                return v
+            raise nonfinite(v)
+
+        return right_constant
     if isinstance(left, float):
-        lv, b = left, right
-        return lambda p: fn(lv, b(p))
-    a = left
-    b = right
-    return lambda p: fn(a(p), b(p))
+        cl, cb = left, right
+
+        def left_constant(p: ParamContext) -> float:
+            v = fn(cl, cb(p))
+            if v - v == 0.0:
+                return v
+            raise nonfinite(v)
+
+        return left_constant
+    fa, fb = left, right
+
+    def both(p: ParamContext) -> float:
+        v = fn(fa(p), fb(p))
+        if v - v == 0.0:
+            return v
+        raise nonfinite(v)
+
+    return both
 
 
-def fold_unary(fn: Callable[[float], float], arg: Value) -> Value:
-    """Apply a function; a constant argument is folded now unless folding raises."""
+def fold_unary(fn: Callable[[float], float], arg: Value, check: bool = False) -> Value:
+    """Apply a function; a constant argument is folded now unless folding raises.  ``check``:
+    the result is a value rs274 checks (a function's), see :func:`finite`."""
     if isinstance(arg, float):
         try:
-            return fn(arg)
+            v = fn(arg)
+            return finite(v) if check else v
         except NgcRuntimeError:
             pass
     a = as_expr(arg)
-    return lambda p: fn(a(p))
-
-
-def checked(value: Value) -> Value:
-    """``value``, stopping the program when it is infinite or not a number (see :func:`finite`)."""
-    if isinstance(value, float):
-        if value - value == 0.0:
-            return value
-        v = value
-        return lambda p: finite(v)
-    fn = value
+    if not check:
+        return lambda p: fn(a(p))
 
     def run(p: ParamContext) -> float:
-        v = fn(p)
+        v = fn(a(p))
         if v - v == 0.0:
             return v
         raise nonfinite(v)

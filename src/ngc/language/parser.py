@@ -368,7 +368,7 @@ class _Reader:
             raise self.error("No characters found in reading real value")
         c = s[self.i]
         if c == "[":
-            return ex.checked(self.read_expression())
+            return self.read_expression(check=True)
         if c == "#":
             self.i += 1
             return self.read_parameter_value()
@@ -396,8 +396,9 @@ class _Reader:
         self.i = m.end()
         return float(token)
 
-    def read_expression(self) -> ex.Value:
-        """``[v0 op1 v1 ...]``, its value unchecked (the caller checks it where rs274 does).
+    def read_expression(self, check: bool = False) -> ex.Value:
+        """``[v0 op1 v1 ...]``; ``check``: rs274 checks the value (a bracket read as a value, not
+        a function's argument nor an o-word's bracket), see :func:`.expressions.finite`.
 
         rs274 applies each operator as soon as the next operator, of the same or a lower
         precedence, is read (``[1/0 + SQRT[-1]]`` divides by zero before it reads SQRT): the
@@ -430,7 +431,7 @@ class _Reader:
             values.append(self.read_value())
         while pending:
             right = values.pop()
-            values[-1] = ex.fold_binary(pending.pop(), values[-1], right)
+            values[-1] = ex.fold_binary(pending.pop(), values[-1], right, check and not pending)
         return values[0]
 
     def read_function(self) -> ex.Value:
@@ -456,7 +457,7 @@ class _Reader:
             if not s.startswith("[", self.i):
                 raise self.error("Left bracket missing after slash with atan")
             return ex.fold_binary_fn(ex.atan2_degrees, arg, self.read_expression())
-        return ex.fold_unary(ex.FUNCTIONS[name], arg)
+        return ex.fold_unary(ex.UNARY[name], arg, check=True)
 
     def read_exists(self) -> ex.Value:
         """EXISTS[#<name>]: 1 if the named parameter exists; EXISTS[#n]: 1 if n is in range."""
