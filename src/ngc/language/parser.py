@@ -495,7 +495,8 @@ class _Reader:
 
     def read_parameter_value(self) -> ex.Value:
         """A parameter's value; one that is infinite or NaN (from a parameter file, or passed to
-        a subroutine) stops the program where it is read."""
+        a subroutine) stops the program where it is read.  The check is written out in each
+        closure, as in ``expressions.fold_*``: a shared helper would cost a call per read."""
         if self.s.startswith("<", self.i):
             name = self.read_name()
 
