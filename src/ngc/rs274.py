@@ -329,8 +329,12 @@ def _save(path: str, interp: Interpreter, err: TextIO) -> None:
         err.write(f"{_as_read(message)}\n")
 
 
+# rs274 keeps an error message in a 255-byte buffer: a longer one is cut.
+MAX_MESSAGE = 254
+
+
 def report(err: TextIO, exc: NgcError, message: str | None = None) -> None:
-    """rs274's error report: the message, then the source line."""
-    err.write(f"{exc.message if message is None else message}\n")
+    """rs274's error report: the message (cut as rs274 cuts it), then the source line."""
+    err.write(f"{(exc.message if message is None else message)[:MAX_MESSAGE]}\n")
     if exc.source is not None:
         err.write(f"{exc.source}\n")

@@ -32,6 +32,7 @@ _SUBSTITUTION = re.compile(r"%(?:d|f|\.[0-9]f|(?=\.))|#(?:<[^>]*>|[0-9]+)")
 # rs274 reads a parameter number in a comment as a C long (saturating) and keeps an int of it.
 _LONG_MAX = 2**63 - 1
 _SHOWN_MIN = 0.0001
+_SHOWN_WIDTH = 29
 _INT_WRAP = 2**32
 
 
@@ -120,10 +121,12 @@ def substitute(it: Machine, text: str) -> str:
 
 def _shown(fmt: str, value: float) -> str:
     """A value as rs274 prints it: under 0.0001 in size as 0 (SIN[0.005] prints 0.000000), NaN
-    with its sign as C's printf shows it (``-nan``)."""
+    with its sign as C's printf shows it (``-nan``), and ``######`` when it takes more than the
+    29 characters rs274 has room for (``[10**22]`` with six decimals)."""
     if value != value:
         return "-nan" if math.copysign(1.0, value) < 0.0 else "nan"
-    return fmt % (value if not abs(value) < _SHOWN_MIN else 0.0)
+    text = fmt % (value if not abs(value) < _SHOWN_MIN else 0.0)
+    return text if len(text) <= _SHOWN_WIDTH else "######"
 
 
 def _parameter(it: Machine, token: str) -> float | None:
