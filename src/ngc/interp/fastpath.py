@@ -26,11 +26,19 @@ from ..errors import NgcSemanticError
 from ..language.codes import FREE_LETTERS, G_CANCEL_MOTION, G_MOTION, CodeTable
 from ..language.expressions import Expr, Value
 from ..language.lexer import C_SPACE
-from ..language.parser import PARAM, WORD, Block, n_label, split_plain, words_of
+from ..language.parser import (
+    PARAM,
+    WORD,
+    Block,
+    check_number_writable,
+    n_label,
+    split_plain,
+    words_of,
+)
 from ..language.words import Words
 from .handlers import modes, motion, program
 from .machine import Machine
-from .parameters import INI_PREFIX, PREDEFINED, Parameters, check_number_writable
+from .parameters import INI_PREFIX, PREDEFINED, Parameters
 
 # The motion handlers a plain line may run.
 PLAIN_HANDLERS = frozenset({"traverse", "feed", "arc"})

@@ -13,7 +13,7 @@ from collections.abc import Callable
 
 from ..config.ini import Ini, ini_parameter
 from ..errors import NgcRuntimeError
-from ..language.parser import MAX_PARAMETER, READ_ONLY_PARAMETERS
+from ..language.parser import MAX_PARAMETER
 from .frames import to_machine
 from .state import AXES, State
 
@@ -27,8 +27,6 @@ G54_ORIGIN = 5221  # G54 X; each system takes 20 numbers, rotation at +9
 COORD_STRIDE = 20
 CURRENT_POSITION = 5420
 DEBUG_ENABLE = 5599  # 0 silences (DEBUG,...) comments
-# Written by the machine only: a program that sets them gets "Parameter is readonly".
-READ_ONLY = READ_ONLY_PARAMETERS
 # Tool-changer fault parameters: rs274 accepts the setting and keeps 0.
 IGNORED_WRITES = frozenset({5600, 5601})
 
@@ -176,12 +174,6 @@ class Parameters:
         else:
             self.locals[-1][target] = value
 
-
-
-def check_number_writable(index: int) -> None:
-    """System parameters the machine maintains are read-only."""
-    if index in READ_ONLY:
-        raise NgcRuntimeError("Parameter is readonly")
 
 
 def check_writable(name: str) -> None:

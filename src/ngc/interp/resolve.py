@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from ..language.codes import CodeTable
 from ..language.expressions import ParamContext
-from ..language.parser import COMMENT, PARAM, WORD, Block, check_index
+from ..language.parser import COMMENT, PARAM, WORD, Block, check_index, check_number_writable
 from ..language.words import Words, add_word
-from .parameters import PREDEFINED, Parameters, check_number_writable, check_writable
+from .parameters import PREDEFINED, Parameters, check_writable
 
 Resolved = Words
 

@@ -51,6 +51,12 @@ MAX_PARAMETER = 5601
 READ_ONLY_PARAMETERS = frozenset(range(5400, 5414)) | frozenset(range(5420, 5429))
 
 
+def check_number_writable(index: int) -> None:
+    """System parameters the machine maintains are read-only."""
+    if index in READ_ONLY_PARAMETERS:
+        raise NgcRuntimeError("Parameter is readonly")
+
+
 def n_label(digits: str | None) -> str:
     """The N column rs274 prints before each canonical call of a block (digits as written)."""
     if digits is None:
@@ -346,8 +352,8 @@ class _Reader:
             self.declare(target)
         else:
             target = self.read_index()
-            if target in READ_ONLY_PARAMETERS:
-                raise NgcRuntimeError("Parameter is readonly")
+            if isinstance(target, int):
+                check_number_writable(target)
         if not self.s.startswith("=", self.i):
             raise self.error("Equal sign missing in parameter setting")
         self.i += 1
