@@ -269,11 +269,15 @@ def persistent_numbers(kept: Iterable[int]) -> list[int]:
     return sorted(wanted.union(REQUIRED_PARAMETERS))
 
 
-def _c_float(value: float) -> str:
-    """C ``printf("%f")``, including glibc's ``-nan``."""
+def c_float(value: float, fmt: str = "%f") -> str:
+    """C ``printf(fmt)`` of a double (``%f``, ``%.Nf``), including glibc's ``-nan``.
+
+    >>> c_float(-0.5), c_float(2.0, "%.1f"), c_float(-float("nan"))
+    ('-0.500000', '2.0', '-nan')
+    """
     if math.isnan(value):
         return "-nan" if math.copysign(1.0, value) < 0 else "nan"
-    return f"{value:f}"
+    return fmt % value
 
 
 def format_var_file(numbered: Sequence[float] | Mapping[int, float], numbers: Iterable[int]) -> bytes:
@@ -286,9 +290,9 @@ def format_var_file(numbered: Sequence[float] | Mapping[int, float], numbers: It
     b'5161\\t1.000000\\n5162\\t-0.000000\\n5163\\t0.000000\\n'
     """
     if isinstance(numbered, Mapping):
-        text = "".join(f"{n}\t{_c_float(numbered.get(n, 0.0))}\n" for n in numbers)
+        text = "".join(f"{n}\t{c_float(numbered.get(n, 0.0))}\n" for n in numbers)
     else:
-        text = "".join(f"{n}\t{_c_float(numbered[n])}\n" for n in numbers)
+        text = "".join(f"{n}\t{c_float(numbered[n])}\n" for n in numbers)
     return text.encode("ascii")
 
 

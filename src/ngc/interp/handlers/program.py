@@ -4,13 +4,13 @@
 
 from __future__ import annotations
 
-import math
 import re
 from collections.abc import Callable
 from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 from ...canon import ops
+from ...config.varfile import c_float
 from ...errors import NgcProgramError
 from .. import frames
 from ..parameters import DEBUG_ENABLE
@@ -123,9 +123,7 @@ def _shown(fmt: str, value: float) -> str:
     """A value as rs274 prints it: under 0.0001 in size as 0 (SIN[0.005] prints 0.000000), NaN
     with its sign as C's printf shows it (``-nan``), and ``######`` when it takes more than the
     29 characters rs274 has room for (``[10**22]`` with six decimals)."""
-    if value != value:
-        return "-nan" if math.copysign(1.0, value) < 0.0 else "nan"
-    text = fmt % (value if not abs(value) < _SHOWN_MIN else 0.0)
+    text = c_float(value if not abs(value) < _SHOWN_MIN else 0.0, fmt)
     return text if len(text) <= _SHOWN_WIDTH else "######"
 
 
