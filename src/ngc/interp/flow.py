@@ -292,8 +292,8 @@ class Flow:
         }
 
     def fresh(self) -> Flow:
-        """A flow for the next program run by the same interpreter: its settings, nothing of
-        the last program (its subroutines, labels, loop counts, work done)."""
+        """A flow for a program about to run: these settings, nothing of a program run before
+        (its subroutines, labels, loop counts, work done)."""
         flow = Flow(self.interp)
         flow.subroutine_path = self.subroutine_path
         flow.fanuc_enabled = self.fanuc_enabled

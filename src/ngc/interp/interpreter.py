@@ -79,7 +79,6 @@ class Interpreter:
         self.flow.max_call_depth = max_call_depth
         self.numbered: Iterator[tuple[int, str]] = iter(())
         self.reader: ProgramReader | None = None
-        self.started = False  # a program has run (or begun to)
 
     # The machine's running block and program files, as attributes of the interpreter too.
     @property
@@ -190,13 +189,11 @@ class Interpreter:
     ) -> None:
         self.file = file
         self.ended = self.finished = False
-        if self.started:
-            # Another program on the same machine: its modes and parameters carry over, the
-            # last program's control flow does not.
-            self.flow = self.flow.fresh()
-            self.machine.state.call_level = 0
-            del self.params.locals[1:]  # the scopes of calls an error left
-        self.started = True
+        # Each program its own control flow; the machine's modes and parameters carry over from
+        # a program run before (and the scopes of calls an error left are dropped).
+        self.flow = self.flow.fresh()
+        self.machine.state.call_level = 0
+        del self.params.locals[1:]
         numbered = enumerate(lines, 1)
         self.numbered = numbered
         number, raw = 0, ""
