@@ -32,7 +32,7 @@ from .canon.text import TextSink
 from .errors import NgcConfigError, NgcError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
-from .interp.source import ProgramReader, open_program
+from .interp.source import ProgramReader, open_text_program, text_reader
 from .options import MachineOptions, Setup, load_setup, new_interpreter, parse_positive
 from .progress import Progress, descriptor, is_terminal
 from .termination import Terminated, signals_raise
@@ -207,8 +207,8 @@ def _open_program(path: str) -> ProgramReader:
     (:mod:`ngc.interp.source`).  Raises ``OSError``."""
     if path == "-":
         stdin = open(sys.stdin.fileno(), "rb", closefd=False)  # noqa: SIM115 (the reader closes it)
-        return ProgramReader(stdin, "utf-8", "surrogateescape", skip_bom=True)
-    return open_program(path, "utf-8", "surrogateescape", skip_bom=True)
+        return text_reader(stdin)
+    return open_text_program(path)
 
 
 def _name(path: str) -> str:

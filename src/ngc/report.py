@@ -21,7 +21,7 @@ from .canon import ops
 from .canon.ops import Op, Sink
 from .errors import NgcError
 from .interp.interpreter import Interpreter
-from .interp.source import ProgramReader, open_program
+from .interp.source import ProgramReader, open_text_program
 
 MM_PER_UNIT = {"CANON_UNITS_MM": 1.0, "CANON_UNITS_INCHES": 25.4, "CANON_UNITS_CM": 10.0}
 UNIT_NAMES = {"CANON_UNITS_MM": "mm", "CANON_UNITS_INCHES": "inch", "CANON_UNITS_CM": "cm"}
@@ -393,7 +393,7 @@ def check_file(path: str | os.PathLike[str]) -> CheckResult:
     (1, 'Cannot do g1 with zero feed rate')
     """
     name = os.fspath(path)
-    with open_program(name, "utf-8", "surrogateescape", skip_bom=True) as reader:
+    with open_text_program(name) as reader:
         return check_lines(reader, name, reader=reader)
 
 

@@ -117,7 +117,18 @@ class ProgramReader:
         self.close()
 
 
-def open_program(path: str, encoding: str = "latin-1", errors: str = "strict", *,
-                 skip_bom: bool = False) -> ProgramReader:
-    """A program file opened for :class:`ProgramReader`.  Raises ``OSError``."""
-    return ProgramReader(open(path, "rb"), encoding, errors, skip_bom=skip_bom)
+def open_program(path: str) -> ProgramReader:
+    """A program file read as rs274 reads it: bytes, one character each (latin-1).  Raises
+    ``OSError``."""
+    return ProgramReader(open(path, "rb"))
+
+
+def text_reader(handle: BinaryIO) -> ProgramReader:
+    """A program read as UTF-8 text (``ngc canon``, ``ngc check``): a leading byte-order mark
+    skipped, bytes that are not UTF-8 kept as surrogates (written back as the same bytes)."""
+    return ProgramReader(handle, "utf-8", "surrogateescape", skip_bom=True)
+
+
+def open_text_program(path: str) -> ProgramReader:
+    """A program file read as :func:`text_reader` reads it.  Raises ``OSError``."""
+    return text_reader(open(path, "rb"))
