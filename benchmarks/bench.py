@@ -42,7 +42,9 @@ REPO_ROOT = HERE.parent
 DEFAULT_SHARED = REPO_ROOT.parent / "shared"
 DEFAULT_OUT_DIR = HERE / "out"
 DEFAULT_RESULTS = HERE / "RESULTS.md"
-KINDS = ("surface", "contour", "macro")
+KINDS = ("surface", "contour", "macro", "ccomp")
+# Kinds that benchmarks/programs.py makes; the others come from ../shared/bench/benchgen.py.
+LOCAL_KINDS = ("ccomp",)
 
 # Same normalization as ../shared/conformance/run.py: rs274 prints every canonical call as
 # "%5d " (a running counter) + the call; strip leading spaces, digits and one space, once.
@@ -119,11 +121,12 @@ def program_path(out_dir: Path, kind: str, lines: int) -> Path:
 
 
 def ensure_program(shared: Path, out_dir: Path, kind: str, lines: int) -> Path:
-    """Generate ``KIND-LINES.ngc`` with benchgen.py unless it already exists."""
+    """Generate ``KIND-LINES.ngc`` (benchgen.py, or programs.py for a local kind) unless it
+    already exists."""
     path = program_path(out_dir, kind, lines)
     if path.is_file():
         return path
-    gen = shared / "bench" / "benchgen.py"
+    gen = HERE / "programs.py" if kind in LOCAL_KINDS else shared / "bench" / "benchgen.py"
     if not gen.is_file():
         raise SystemExit(f"bench.py: generator not found: {gen} (use --shared DIR)")
     out_dir.mkdir(parents=True, exist_ok=True)
