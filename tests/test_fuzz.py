@@ -37,6 +37,52 @@ def test_ngc_runs_generated_programs(kind: str) -> None:
         assert "Traceback" not in result.raw_err, f"{kind} seed {seed}"
 
 
+def test_tool_table_travels_with_the_program() -> None:
+    """A tools program with its own table carries it in marked comment lines; run.py passes it
+    with -t to both sides, and a program without one runs with the default table."""
+    with_table = [s for s in range(1, 40) if gen.table_of(gen.generate("tools", s)) is not None]
+    assert with_table, "no tools program with its own table"
+    text = gen.generate("tools", with_table[0])
+    table = gen.table_of(text)
+    assert table is not None and table.startswith("T")
+    assert run.arguments(text) == ["-t", gen.TABLE_NAME, "-g", run.PROGRAM_NAME]
+    assert run.arguments(gen.generate("motion", 1)) == ["-g", run.PROGRAM_NAME]
+    with run.workspace(text) as (work, _home):
+        assert (work / gen.TABLE_NAME).read_text(encoding="latin-1") == table
+
+
+def test_contours_are_closed_and_tool_fits() -> None:
+    """Closed contours end where they start; the generator scales them so the tool radius is
+    well below their smallest feature."""
+    import random
+
+    import contour
+
+    rng = random.Random(3)
+    for _ in range(200):
+        c = contour.shape(rng, rng.uniform(5, 40), ccw=rng.random() < 0.5)
+        assert c.feature > 0
+        if c.closed:
+            end = c.segs[-1].end
+            assert abs(end[0] - c.start[0]) < 1e-9 and abs(end[1] - c.start[1]) < 1e-9
+        for s in c.segs:
+            if s.center is not None:
+                start = c.start if s is c.segs[0] else c.segs[c.segs.index(s) - 1].end
+                r1 = ((start[0] - s.center[0]) ** 2 + (start[1] - s.center[1]) ** 2) ** 0.5
+                r2 = ((s.end[0] - s.center[0]) ** 2 + (s.end[1] - s.center[1]) ** 2) ** 0.5
+                assert abs(r1 - r2) < 1e-6 * max(r1, 1)
+
+
+@pytest.mark.skipif(shutil.which("rs274") is None, reason="LinuxCNC's rs274 is not installed")
+@pytest.mark.parametrize("kind", ["tools", "comp"])
+def test_rs274_runs_most_programs_to_the_end(kind: str) -> None:
+    """Programs of the tools and comp kinds mostly run to the end in rs274 (a program that
+    fails on line 3 tests little)."""
+    ok = sum(run.run_command(["rs274"], gen.generate(kind, seed), 10.0).rc == 0
+             for seed in range(1, 41))
+    assert ok >= 30, f"{kind}: only {ok} of 40 programs run to the end in rs274"
+
+
 # Fixed seeds known to run identically; a difference here is a regression (or a generator change:
 # then pick seeds again from `python tests/fuzz/run.py --count 40 --seed 1`).  failing seed 8
 # shows a known difference (a break out of a while loop, then a do loop: see test_golden KNOWN).

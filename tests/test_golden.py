@@ -26,14 +26,28 @@ KNOWN: dict[str, str] = {
     "ngc computes in double",
 }
 
+# Cases recorded ahead of the code they need, by name prefix: expected to fail until it is in;
+# not strict, so a case passes as soon as its code is there. Remove a prefix once all its cases pass.
+PENDING: dict[str, str] = {
+    "ccomp-": "cutter radius compensation (G40, G41, G42, G41.1, G42.1) and tools are not in yet",
+}
+
+
+def _pending(name: str) -> str | None:
+    return next((reason for prefix, reason in PENDING.items() if name.startswith(prefix)), None)
+
+
+def _mark(name: str) -> object:
+    if name in KNOWN:
+        return pytest.param(name, marks=pytest.mark.xfail(reason=KNOWN[name], strict=True))
+    reason = _pending(name)
+    if reason is not None:
+        return pytest.param(name, marks=pytest.mark.xfail(reason=reason, strict=False))
+    return name
+
 
 def _cases() -> list[object]:
-    return [
-        pytest.param(name, marks=pytest.mark.xfail(reason=KNOWN[name], strict=True))
-        if name in KNOWN
-        else name
-        for name in sorted(p.stem for p in CASES.glob("*.ngc"))
-    ]
+    return [_mark(name) for name in sorted(p.stem for p in CASES.glob("*.ngc"))]
 
 
 @pytest.mark.parametrize("fast", [True, False], ids=["fast", "general"])

@@ -28,6 +28,8 @@ import math
 import random
 from collections.abc import Callable
 
+import contour
+
 AXES = "xyz"
 # plane code -> (first axis, second axis, normal axis, first offset letter, second offset letter)
 PLANES = {
@@ -66,6 +68,9 @@ class Gen:
         self.pos: dict[str, float] | None = {"x": 0.0, "y": 0.0, "z": 0.0}
         self.labels = 100
         self.locals = 0
+        self.tools = dict(DEFAULT_TABLE)  # the tool table the program runs with
+        self.comp_on = False  # a contour left cutter compensation on
+        self.lathe_tools: set[int] = set()  # tools of the table with an orientation (Q)
 
     # ---- formatting -------------------------------------------------------------------------
     def num(self, v: float, places: int = 4) -> str:
@@ -824,10 +829,406 @@ def st_mixed_line(g: Gen) -> None:
         g.emit(g.words(*words))
 
 
+# ---- tools: tool tables, T/M6/M61, tool length offsets, G10 L1/L10/L11, G7/G8 ------------------
+
+# The table rs274 loads without -t (inch values); tool number -> (pocket, diameter, z).
+DEFAULT_TABLE: dict[int, tuple[int, float, float]] = {
+    1: (1, 0.125, 0.511), 2: (2, 0.0625, 0.1), 3: (3, 0.201, 1.273), 99999: (123, 0.0, 0.1)}
+# A program that carries its own tool table holds it in comment lines starting with this mark;
+# run.py writes them (without the mark) to TABLE_NAME and passes ``-t TABLE_NAME`` to both sides.
+TABLE_MARK = ";tooltable:"
+TABLE_NAME = "table.tbl"
+TOOL_PARAMS = ["#5400", "#5401", "#5402", "#5403", "#5404", "#5405", "#5406", "#5407", "#5408",
+               "#5409", "#5410", "#5411", "#5412", "#5413", "#<_current_tool>",
+               "#<_current_pocket>", "#<_selected_tool>", "#<_selected_pocket>"]
+
+
+def table_of(text: str) -> str | None:
+    """The tool table a program carries (the lines after TABLE_MARK), or None: the default."""
+    rows = [line[len(TABLE_MARK):].strip() for line in text.splitlines()
+            if line.startswith(TABLE_MARK)]
+    return "".join(row + "\n" for row in rows) if rows else None
+
+
+def write_table(g: Gen) -> None:
+    """Make a tool table of 1-7 tools and put it into the program (after a leading %)."""
+    rng = g.rng
+    numbers = rng.sample([*range(1, 21), 99, 1234, 0], rng.randint(1, 7))
+    pockets = rng.sample(range(1, 40), len(numbers))
+    tools: dict[int, tuple[int, float, float]] = {}
+    rows = []
+    for t, p in zip(numbers, pockets, strict=True):
+        d = round(rng.uniform(0.01, 0.6), rng.choice([3, 4, 6]))
+        z = round(rng.uniform(-3, 6), rng.choice([2, 3, 6]))
+        fields = [f"D{d}", f"Z{'+' if z >= 0 and rng.random() < 0.5 else ''}{z}"]
+        if rng.random() < 0.3:
+            fields.append(f"X{round(rng.uniform(-1, 1), 3)}")
+        if rng.random() < 0.2:
+            fields += [f"Q{rng.randint(0, 9)}", f"I{rng.randint(-90, 90)}", f"J{rng.randint(0, 90)}"]
+            g.lathe_tools.add(t)
+        if rng.random() < 0.1:
+            fields.remove(f"D{d}")
+            d = 0.0
+        rng.shuffle(fields)
+        comment = rng.choice(["", " ;", f" ;{rng.choice(WORDS_TEXT)}"])
+        rows.append(f"T{t} P{p} {' '.join(fields)}{comment}")
+        tools[t] = (p, d, z)
+    at = 1 if g.lines and g.lines[0] == "%" else 0
+    g.lines[at:at] = [TABLE_MARK + " " + row for row in rows]
+    g.tools = tools
+
+
+def _tool(g: Gen, known: float = 0.99) -> int:
+    """A tool number of the table (or, now and then, one that is not in it)."""
+    if g.rng.random() < known and g.tools:
+        t = g.rng.choice(sorted(g.tools))
+        if t == 99999 and g.rng.random() < 0.8:  # a big number: rs274 does not find it for G43 H
+            t = g.rng.choice(sorted(g.tools))
+        return t
+    return g.rng.choice([0, 4, 17, 50, 99999])
+
+
+def st_tool_change(g: Gen) -> None:
+    rng = g.rng
+    t = _tool(g)
+    r = rng.random()
+    if r < 0.5:
+        g.emit(g.words(g.word("T", str(t)), "M6") if rng.random() < 0.7
+               else g.words("M6", g.word("T", str(t))))
+    elif r < 0.7:
+        g.emit(g.words(g.word("T", str(t))))
+        if rng.random() < 0.7:
+            g.emit("M6")
+    elif r < 0.9:
+        g.emit(g.words("M61", g.word("Q", str(t))))
+    else:
+        g.emit(g.words(g.word("T", str(t))))
+    if rng.random() < 0.4:
+        g.emit(g.words("G43") if rng.random() < 0.7 else g.words("G43", g.word("H", str(t))))
+        _lose_position(g)
+
+
+def st_tool_offset(g: Gen) -> None:
+    rng = g.rng
+    r = rng.random()
+    scale = 1 if g.metric else 1 / 25.4
+    if r < 0.3:
+        g.emit(g.words("G43", g.word("H", str(_tool(g)))) if rng.random() < 0.6 else "G43")
+    elif r < 0.5:
+        axes = ["Z"] if rng.random() < 0.5 else rng.sample(["X", "Z", "Y", "A"], rng.randint(1, 2))
+        g.emit(g.words("G43.1", *(g.word(a, g.num(rng.uniform(-20, 20) * scale, 3)) for a in axes)))
+    elif r < 0.7:
+        if rng.random() < 0.9:
+            g.emit(g.words("G43.2", g.word("H", str(_tool(g)))))
+        else:
+            g.emit(g.words("G43.2", g.word("Z", g.num(rng.uniform(-5, 5) * scale, 3))))
+    else:
+        g.emit("G49")
+    _lose_position(g)
+
+
+def st_g10_tool(g: Gen) -> None:
+    rng = g.rng
+    level = rng.choice(["1", "1", "10", "11"])
+    t = _tool(g)
+    if t == 0 and rng.random() < 0.9:  # P0 is out of range
+        t = rng.choice([n for n in sorted(g.tools) if n] or [1])
+    scale = 1 if g.metric else 1 / 25.4
+    words: list[str] = []
+    letters = ["Z", "X", "R", "I", "J", "Q"] if level == "1" else ["Z", "X", "Y"]
+    for letter in rng.sample(letters, rng.randint(1, 3)):
+        if letter == "R":
+            v = g.num(rng.uniform(0, 5) * scale, 3)
+        elif letter == "Q":
+            v = str(rng.randint(0, 9))
+        elif letter in "IJ":
+            v = g.num(rng.uniform(-90, 90), 1)
+        else:
+            v = g.num(rng.uniform(-30, 30) * scale, 3)
+        words.append(g.word(letter, v))
+    g.emit(g.words("G10", g.word("L", level), g.word("P", str(t)), *words))
+    if rng.random() < 0.3:
+        g.emit("G43")
+    _lose_position(g)
+
+
+def st_tool_params(g: Gen) -> None:
+    ps = g.rng.sample(TOOL_PARAMS, g.rng.randint(1, 4))
+    if g.rng.random() < 0.7:
+        g.emit("(DEBUG," + " ".join(f"{p[1:].strip('<>')}={p}" for p in ps) + ")", numbered=False)
+    else:
+        g.locals += 1
+        g.emit(f"#{g.locals} = [{ps[0]} * 2]")
+        g.emit(f"(DEBUG,twice {ps[0][1:]} is #{g.locals})", numbered=False)
+
+
+def st_lathe_diameter(g: Gen) -> None:
+    """G7 (X words are diameters) with a few moves in the XZ plane, then G8 again."""
+    rng = g.rng
+    if g.plane != "18":
+        g.plane = "18"
+        g.emit(g.g("18"))
+    if not g.absolute:
+        g.absolute = True
+        g.emit(g.g("90"))
+    g.emit(g.words("G7"))
+    scale = 1 if g.metric else 1 / 25.4
+    for k in range(rng.randint(1, 4)):
+        x = round(rng.uniform(1, 30) * scale, 3)
+        z = round(rng.uniform(-40, 5) * scale, 3)
+        code = rng.choice(["0", "1", "1"])
+        f = g.feed_word(force=k == 0) if code == "1" else None
+        g.emit(g.words(g.g(code), g.word("X", g.num(2 * x)), g.word("Z", g.num(z)), f))
+        g.motion = code
+        if rng.random() < 0.3:
+            g.emit("(DEBUG,x=#<_x> 5420=#5420 diameter=#<_lathe_diameter_mode>)", numbered=False)
+    g.emit(g.words("G8"))
+    _lose_position(g)
+
+
+TOOLS: list[tuple[float, Callable[[Gen], None]]] = [
+    (10, st_rapid),
+    (14, st_feed_lines),
+    (6, st_arc),
+    (1.5, st_plane),
+    (1, st_distance),
+    (0.6, st_units),
+    (3, st_comment),
+    (8, st_tool_change),
+    (6, st_tool_offset),
+    (5, st_g10_tool),
+    (6, st_tool_params),
+    (2.5, st_lathe_diameter),
+]
+
+
+def gen_tools(seed: int) -> str:
+    g = Gen(seed, "tools")
+    preamble(g)
+    if g.rng.random() < 0.7:
+        write_table(g)
+    body(g, TOOLS_WITH_COMP, g.rng.randint(5, 30))
+    ending(g)
+    return text_of(g.lines)
+
+
+# ---- cutter radius compensation: contours with entry and exit moves ---------------------------
+
+# plane -> (axis words of u and v, center offset letters of u and v, the normal axis word)
+COMP_PLANES = {"17": ("X", "Y", "I", "J", "Z"), "18": ("Z", "X", "K", "I", "Y")}
+
+
+def _comp_radius(g: Gen) -> tuple[float, list[str], bool]:
+    """The tool radius (mm), the words after the G code that turns comp on, and whether that is
+    G41.1/G42.1 (a diameter) rather than G41/G42 (a tool)."""
+    rng = g.rng
+    r = rng.random()
+    # a lathe tool (one with an orientation) takes comp in G18 only: now and then try it anyway
+    tools = {t: v for t, v in g.tools.items()
+             if v[1] > 0 and (t not in g.lathe_tools or g.plane == "18" or rng.random() < 0.05)}
+    if r < 0.55 or not tools:
+        radius = rng.choice([0.5, 1, 1.5, 2, 3, 4, 5, 6.35]) * rng.uniform(0.8, 1.2)
+        d = radius * 2 / (1 if g.metric else 25.4)
+        return radius, [g.word("D", g.num(d, 4))], True
+    t = rng.choice(sorted(tools))
+    radius = tools[t][1] * 25.4 / 2
+    if r < 0.8:
+        return radius, [g.word("D", str(t))], False
+    g.emit(g.words(g.word("T", str(t)), "M6"))
+    return radius, ([g.word("D", "0")] if rng.random() < 0.3 else []), False
+
+
+MISTAKES = ["short-entry", "big-tool", "arc-exit", "on-twice", "yz"]
+
+
+def st_comp_contour(g: Gen) -> None:
+    """A compensated contour: lead-in point, comp on, entry move, the contour (maybe held in a
+    subroutine, maybe incremental), things between the moves, G40 and an exit move.  Now and
+    then a mistake: a short entry, a tool too big for the contour, an arc after G40, ..."""
+    rng = g.rng
+    if g.plane not in COMP_PLANES or rng.random() < 0.2:
+        g.plane = rng.choice(["17", "17", "17", "18"])
+        g.emit(g.g(g.plane))
+    wu, wv, lu, lv, wn = COMP_PLANES[g.plane]
+    if g.feed_mode != "94":
+        g.feed_mode = "94"
+        g.feed = 0.0
+        g.emit(g.g("94"))
+    mistake = rng.choice(MISTAKES) if rng.random() < 0.04 else ""
+    radius, dwords, dynamic = _comp_radius(g)
+    scale = 1 if g.metric else 1 / 25.4
+    left = rng.random() < 0.5
+    c = contour.shape(rng, rng.uniform(8, 40), ccw=rng.random() < 0.5)
+    if mistake == "big-tool":
+        c = c.scaled(radius * rng.uniform(0.6, 1.5) / c.feature)
+    elif c.feature < 8 * radius:
+        c = c.scaled(8 * radius / c.feature)
+    c = c.moved(rng.uniform(-30, 30), rng.uniform(-30, 30)).scaled(scale).rounded(4)
+    r_prog = radius * scale
+    # the lead-in point: beside the start on the tool's side, farther from it than the radius
+    d0 = contour.start_direction(c.start, c.segs[0])
+    n = contour.side_normal(d0, left)
+    if mistake == "short-entry":
+        dist, back = rng.uniform(0.2, 0.9) * r_prog, 0.0
+    else:
+        dist, back = rng.uniform(1.5, 3) * r_prog + 0.5 * scale, rng.uniform(0, 1.5) * r_prog
+    lead = (round(c.start[0] + n[0] * dist - d0[0] * back, 4),
+            round(c.start[1] + n[1] * dist - d0[1] * back, 4))
+    incremental = rng.random() < 0.2
+    use_sub = rng.random() < 0.15
+
+    def to(p: contour.Point, frm: contour.Point) -> list[str]:
+        if incremental:
+            return [g.word(wu, g.num(p[0] - frm[0])), g.word(wv, g.num(p[1] - frm[1]))]
+        return [g.word(wu, g.num(p[0])), g.word(wv, g.num(p[1]))]
+
+    side = ("41" if left else "42") + (".1" if dynamic else "")
+    extra = [g.word("L", str(rng.randint(0, 9)))] \
+        if g.plane == "18" and dynamic and rng.random() < 0.4 else []
+    on_line = g.words(g.g(side), *dwords, *extra)
+    # the contour after the entry move
+    body_lines: list[str] = []
+    cur = last_start = c.start
+    prev: str | None = None
+    for k, s in enumerate(c.segs):
+        code = ("3" if s.ccw else "2") if s.is_arc else "1"
+        words = to(s.end, cur)
+        if s.center is not None:
+            ref = (0.0, 0.0) if g.arc_absolute else cur
+            words += [g.word(lu, g.num(s.center[0] - ref[0])), g.word(lv, g.num(s.center[1] - ref[1]))]
+        lead_code = g.g(code) if code != prev or rng.random() < 0.4 else None
+        body_lines.append(g.words(lead_code, *words, g.feed_word() if rng.random() < 0.3 else None))
+        prev = code
+        last_start, cur = cur, s.end
+        if mistake == "on-twice" and k == len(c.segs) // 2:
+            body_lines.append(on_line)
+        if rng.random() < 0.2:
+            body_lines += _between(g, wn, incremental)
+            prev = None
+    if c.closed and not c.segs[0].is_arc and rng.random() < 0.3:  # overlap past the start
+        mid = (round((cur[0] + c.segs[0].end[0]) / 2, 4), round((cur[1] + c.segs[0].end[1]) / 2, 4))
+        body_lines.append(g.words(g.g("1"), *to(mid, cur)))
+        cur = mid
+    if use_sub:
+        name = f"o<contour{g.labels}>"
+        g.labels += 1
+        g.emit(f"{name} sub", numbered=False)
+        for line in body_lines:
+            g.emit("  " + line, numbered=False)
+        g.emit(f"{name} endsub", numbered=False)
+    # frame changes before the lead-in, now and then
+    frame = rng.random()
+    if frame < 0.06:
+        g.emit(g.words("G52", g.word(wu, g.num(g.coord(-20, 20))), g.word(wv, g.num(g.coord(-20, 20)))))
+    elif frame < 0.1:
+        g.emit(g.words("G10", "L2", "P0", g.word("R", g.num(rng.uniform(-90, 90), 2))))
+    elif frame < 0.14:
+        g.emit(g.words("G92", g.word(wu, g.num(g.coord(-20, 20))), g.word(wv, g.num(g.coord(-20, 20)))))
+    if not g.absolute:
+        g.absolute = True
+        g.emit(g.g("90"))
+    safe = g.coord(2, 10)
+    g.emit(g.words(g.g("0"), g.word(wn, g.num(safe))))
+    g.emit(g.words(g.g("0"), g.word(wu, g.num(lead[0])), g.word(wv, g.num(lead[1]))))
+    f = g.feed_word(force=True)
+    if rng.random() < 0.7:
+        g.emit(g.words(g.g("1"), g.word(wn, g.num(g.coord(-5, 0))), f))
+        f = None
+    if mistake == "yz":
+        g.plane = "19"
+        g.emit(g.g("19"))
+    if incremental:
+        g.absolute = False
+        g.emit(g.g("91"))
+    entry_code = "0" if rng.random() < 0.1 else "1"
+    entry = [g.g(entry_code), *to(c.start, lead), f]
+    if rng.random() < 0.25:
+        g.emit(g.words(on_line, *entry))
+    else:
+        g.emit(on_line)
+        g.emit(g.words(*entry))
+    if use_sub:
+        g.emit(f"{name} call", numbered=False)
+    else:
+        for line in body_lines:
+            g.emit(line)
+    _lose_position(g)
+    g.motion = None
+    if rng.random() < 0.03:
+        g.comp_on = True  # comp stays on till the program ends
+        return
+    # the exit: G40 and a move away on the tool's side
+    direction = contour.start_direction(c.start, c.segs[0]) if c.closed \
+        else contour.end_direction(last_start, c.segs[-1])
+    dl = contour.side_normal(direction, left)
+    away = rng.uniform(2.5, 4) * r_prog + scale
+    exit_pt = (round(cur[0] + dl[0] * away, 4), round(cur[1] + dl[1] * away, 4))
+    exit_code = rng.choice(["0", "1"])
+    if mistake == "arc-exit":
+        g.emit(g.g("40"))
+        g.emit(g.words(g.g("2"), *to(exit_pt, cur), g.word("R", g.num(away * 2))))
+    elif rng.random() < 0.3:
+        g.emit(g.words(g.g("40"), g.g(exit_code), *to(exit_pt, cur)))
+    else:
+        g.emit(g.g("40"))
+        g.emit(g.words(g.g(exit_code), *to(exit_pt, cur)))
+    g.motion = exit_code
+
+
+def _between(g: Gen, normal: str, incremental: bool) -> list[str]:
+    """Lines between compensated moves: comments, messages, a feed, coolant, a dwell, a normal
+    axis move, a spindle speed, a parameter read."""
+    rng = g.rng
+    r = rng.random()
+    if r < 0.25:
+        return [g.comment()]
+    if r < 0.35:
+        return [g.words("F" + g.num(rng.uniform(50, 2000) * (1 if g.metric else 1 / 25.4), 1))]
+    if r < 0.45:
+        return [rng.choice(["M7", "M8", "M9"])]
+    if r < 0.55:
+        return [g.words(g.g("4"), g.word("P", g.num(rng.uniform(0, 1), 2)))]
+    if r < 0.7:
+        v = rng.uniform(-1, 1) * (1 if g.metric else 1 / 25.4)
+        return [g.words(g.g("1"), g.word(normal, g.num(v if incremental else v - 1, 3)))]
+    if r < 0.8:
+        return [g.words(g.word("S", g.num(rng.randint(500, 12000), 0)), rng.choice(["M3", "M4"]))]
+    if r < 0.9:
+        return ["(DEBUG,x=#<_x> y=#<_y> z=#<_z> comp=#<_ccomp>)"]
+    return [f";{rng.choice(WORDS_TEXT)}"]
+
+
+COMP: list[tuple[float, Callable[[Gen], None]]] = [
+    (10, st_comp_contour),
+    (3, st_rapid),
+    (2, st_feed_lines),
+    (1, st_arc),
+    (1, st_units),
+    (1, st_comment),
+    (0.7, st_distance),
+    (0.7, st_tool_change),
+    (0.5, st_spindle),
+    (0.5, st_coolant),
+]
+TOOLS_WITH_COMP: list[tuple[float, Callable[[Gen], None]]] = [*TOOLS, (4, st_comp_contour)]
+
+
+def gen_comp(seed: int) -> str:
+    g = Gen(seed, "comp")
+    preamble(g)
+    if g.rng.random() < 0.1:
+        write_table(g)
+    body(g, COMP, g.rng.randint(1, 6))
+    ending(g)
+    return text_of(g.lines)
+
+
 def body(g: Gen, table: list[tuple[float, Callable[[Gen], None]]], count: int) -> None:
     weights = [w for w, _ in table]
     fns = [f for _, f in table]
     for _ in range(count):
+        if g.comp_on:  # a contour left compensation on: the program ends here
+            break
         g.rng.choices(fns, weights)[0](g)
 
 
@@ -848,7 +1249,9 @@ def gen_offsets(seed: int) -> str:
     return text_of(_program("offsets", seed, OFFSETS, 5, 40).lines)
 
 
-MIXED: list[tuple[float, Callable[[Gen], None]]] = [*MOTION, (30, st_mixed_line)]
+MIXED: list[tuple[float, Callable[[Gen], None]]] = [
+    *MOTION, (30, st_mixed_line), (0.6, st_comp_contour), (0.4, st_tool_change),
+    (0.3, st_tool_offset), (0.3, st_tool_params)]
 
 
 def gen_mixed(seed: int) -> str:
@@ -1057,6 +1460,8 @@ KINDS: dict[str, Callable[[int], str]] = {
     "oword": gen_oword,
     "mixed": gen_mixed,
     "failing": gen_failing,
+    "tools": gen_tools,
+    "comp": gen_comp,
 }
 
 

@@ -5,7 +5,8 @@
         [--jobs 2] [--shrink] [--out DIR] [--rs274 CMD] [--ngc CMD|inproc]
 
 Each program runs the way tests/golden/regen.py runs rs274: a fresh temporary cwd holding the
-program, stdin /dev/null, ``LC_ALL=C``, a private ``HOME``, ``INI_FILE_NAME`` removed, a timeout.
+program (and ``table.tbl``, passed as ``-t table.tbl``, when the program carries a tool table),
+stdin /dev/null, ``LC_ALL=C``, a private ``HOME``, ``INI_FILE_NAME`` removed, a timeout.
 ngc runs in the worker process by default (``--ngc inproc``: ``ngc.rs274.run(argv)`` with
 in-memory streams, chdir'd into the same kind of folder); ``--ngc 'ngc rs274'`` or
 ``--ngc 'python -m ngc rs274'`` runs it as a command instead.  Compared: stdout without the counter
@@ -85,13 +86,24 @@ class Result:
 
 @contextlib.contextmanager
 def workspace(text: str) -> Iterator[tuple[Path, Path]]:
-    """A fresh folder holding the program, and a private HOME."""
+    """A fresh folder holding the program (and its tool table, if it carries one: see
+    ``gen.table_of``), and a private HOME: rs274 keeps its tool table in $HOME/.tool.mmap."""
     with tempfile.TemporaryDirectory(prefix="ngc-fuzz-") as tmp:
         work, home = Path(tmp) / "work", Path(tmp) / "home"
         work.mkdir()
         home.mkdir()
         (work / PROGRAM_NAME).write_bytes(text.encode("latin-1"))
+        table = gen.table_of(text)
+        if table is not None:
+            (work / gen.TABLE_NAME).write_bytes(table.encode("latin-1"))
         yield work, home
+
+
+def arguments(text: str) -> list[str]:
+    """The command line after the program name: ``-t table.tbl`` if the program carries a tool
+    table, then ``-g prog.ngc``."""
+    table = ["-t", gen.TABLE_NAME] if gen.table_of(text) is not None else []
+    return [*table, "-g", PROGRAM_NAME]
 
 
 def outcome(stdout: str, stderr: str, rc: int) -> Outcome:
@@ -101,7 +113,7 @@ def outcome(stdout: str, stderr: str, rc: int) -> Outcome:
 def run_command(cmd: list[str], text: str, timeout: float) -> Outcome:
     with workspace(text) as (work, home):
         try:
-            proc = subprocess.run([*cmd, "-g", PROGRAM_NAME], cwd=work, env=child_env(home),
+            proc = subprocess.run([*cmd, *arguments(text)], cwd=work, env=child_env(home),
                                   stdin=subprocess.DEVNULL, capture_output=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return Outcome([], [f"<timed out after {timeout:g}s>"], -1)
@@ -131,7 +143,7 @@ def run_inproc(text: str, timeout: float) -> Outcome:
             old = signal.signal(signal.SIGALRM, _alarm)
             signal.setitimer(signal.ITIMER_REAL, timeout)
         try:
-            rc = rs274.run(["-g", PROGRAM_NAME], stdout=out, stderr=err)
+            rc = rs274.run(arguments(text), stdout=out, stderr=err)
         except _Timeout:
             return Outcome([], [f"<timed out after {timeout:g}s>"], -1)
         except Exception:
