@@ -65,7 +65,7 @@ PREDEFINED: dict[str, Getter] = {
     "_units_per_minute": _flag("feed_mode", 940),
     "_units_per_rev": _flag("feed_mode", 950),
     "_coord_system": lambda s: float(530 + 10 * s.coord_index if s.coord_index <= 6 else 584 + s.coord_index),
-    "_tool_offset": _flag("tool_offset", True),
+    "_tool_offset": lambda s: 1.0 if any(s.tlo) else 0.0,  # an offset not all zero in effect
     "_retract_r_plane": _flag("retract_r", True),
     "_retract_old_z": _flag("retract_r", False),
     "_spindle_rpm_mode": lambda s: 1.0,

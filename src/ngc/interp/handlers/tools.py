@@ -77,6 +77,8 @@ def change_tool(it: Machine) -> None:
         raise NgcSemanticError("Cannot change tools with cutter radius compensation on")
     index = st.selected_index
     it.emit(ops.StartChange())
+    st.spindle = 0  # the spindle stops for the change
+    it.emit(ops.StopSpindleTurning(0))
     it.emit(ops.ChangeTool(index))
     if index > 0:
         st.tools.slots[0] = st.tools.slots[index]
@@ -139,7 +141,7 @@ def tool_length(it: Machine, r: Words, code: int) -> None:
         entry = _lookup(it, -1 if h is None else int(h))
         added = _to_program_units(st, entry.offsets)
         new = [st.tlo[i] + added[i] for i in range(9)]
-    _apply(it, new, True)
+    _apply(it, new)
 
 
 def tool_length_off(it: Machine) -> None:
@@ -147,10 +149,10 @@ def tool_length_off(it: Machine) -> None:
     st = it.state
     if st.ccomp != 400:
         raise NgcSemanticError("Cannot change tool offset with cutter radius compensation on")
-    _apply(it, [0.0] * 9, False)
+    _apply(it, [0.0] * 9)
 
 
-def _apply(it: Machine, new: list[float], on: bool) -> None:
+def _apply(it: Machine, new: list[float]) -> None:
     """Put a tool length offset in effect: the current point moves by the change."""
     st = it.state
     if st.canon_pos is None or st.canon_anchor is not st.pos:
@@ -159,7 +161,6 @@ def _apply(it: Machine, new: list[float], on: bool) -> None:
     st.tlo = new
     st.pos = [st.pos[i] + old[i] - new[i] for i in range(AXES)]
     st.canon_anchor = st.pos
-    st.tool_offset = on
     it.emit(ops.UseToolLengthOffset(*new))
 
 
