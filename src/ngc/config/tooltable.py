@@ -35,6 +35,8 @@ class ToolEntry(NamedTuple):
     comment: str = ""
 
 
+# The slot of a line that starts with a tool number and is skipped: no tool is found there.
+UNREAD = ToolEntry(-1, -1)
 # The spindle's entry when no tool was ever loaded.
 EMPTY_SPINDLE = ToolEntry(0, -1)
 
@@ -48,7 +50,7 @@ class ToolTable(NamedTuple):
     def find(self, number: int) -> ToolEntry | None:
         """The first entry of tool ``number``, or None."""
         for entry in self.entries:
-            if entry.number == number:
+            if entry.number == number and number >= 0:
                 return entry
         return None
 
@@ -93,6 +95,9 @@ def parse_tool_table(text: str) -> ToolTable:
         found = parse_line(line)
         if isinstance(found, str):
             skipped.append(found)
+            first = found.split()[0]
+            if first[0] in "tT" and _number(first[1:]) is not None:
+                entries.append(UNREAD)  # rs274 gave the line its slot before it gave up
         elif found is not None:
             entries.append(found)
     return ToolTable(tuple(entries), tuple(skipped))
@@ -138,6 +143,8 @@ class Tools:
 
     def index(self, number: int) -> int | None:
         """The slot of tool ``number`` (1-based, file order), or None."""
+        if number < 0:
+            return None
         for i in range(1, len(self.slots)):
             if self.slots[i].number == number:
                 return i

@@ -54,7 +54,7 @@ def integer_value(value: float) -> int:
     k = math.floor(value)
     fraction = value - k
     if fraction > 0.9999:
-        return int(math.ceil(value))
+        return math.ceil(value)
     if fraction > 0.0001:
         raise NgcSyntaxError("Non integer value for integer")
     return int(k)
