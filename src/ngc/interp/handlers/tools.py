@@ -46,11 +46,17 @@ def _lookup(it: Machine, number: int) -> ToolEntry:
     """The entry of tool ``number``; 0 is the tool in the spindle."""
     tools = it.state.tools
     if number == 0:
-        return tools.spindle
+        return _current(it.state)
     entry = tools.find(number) if number > 0 else None
     if entry is None:
         raise _not_found(number)
     return entry
+
+
+def _current(st: State) -> ToolEntry:
+    """The tool G43 applies: the slot M6 or M61 last put in the spindle (M61 loads no entry);
+    before any, the spindle's empty entry."""
+    return st.tools.slots[st.tool_index] if st.tool_set else st.tools.spindle
 
 
 # -- T, M6, M61 ---------------------------------------------------------------------------------
@@ -83,7 +89,7 @@ def change_tool(it: Machine) -> None:
     if index > 0:
         st.tools.slots[0] = st.tools.slots[index]
     st.tool_index = index
-    st.tool_changed = True
+    st.tool_set = st.tool_changed = True
 
 
 def set_tool_number(it: Machine, r: Words) -> None:
@@ -98,7 +104,7 @@ def set_tool_number(it: Machine, r: Words) -> None:
         raise _not_found(number)
     it.emit(ops.ChangeToolNumber(index))
     st.tool_index = index
-    st.tool_changed = True
+    st.tool_set = st.tool_changed = True
 
 
 def _round(value: float) -> float:
@@ -123,7 +129,7 @@ def tool_length(it: Machine, r: Words, code: int) -> None:
     w = r.w
     if code == 430:
         h = w.get("h")
-        entry = st.tools.spindle if h is None else _lookup(it, int(h))
+        entry = _current(st) if h is None else _lookup(it, int(h))
         new = _to_program_units(st, entry.offsets)
     elif code == 431:
         new = list(st.tlo)
