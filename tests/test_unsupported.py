@@ -13,8 +13,7 @@ from ngc.language.codes import LINUXCNC, g_name
 # were executed in part.
 LINES = {
     "G41": "G41 D1", "G41.1": "G41.1 D1 L3", "G42": "G42 D1", "G42.1": "G42.1 D1 L3",
-    "G43": "G43 H1", "G43.1": "G43.1 Z1", "G43.2": "G43.2 H1", "G96": "G96 D2000",
-    "G7": "G7", "G8": "G8", "G5": "G5 X1 Y1 I0.5 J0.5 P0.5 Q0.5", "G5.1": "G5.1 X1 Y1 I0.5 J0.5",
+    "G96": "G96 D2000", "G5": "G5 X1 Y1 I0.5 J0.5 P0.5 Q0.5", "G5.1": "G5.1 X1 Y1 I0.5 J0.5",
     "G5.2": "G5.2 X1 Y1 P1 L3", "G33": "G33 Z-1 K0.1", "G33.1": "G33.1 Z-1 K0.1",
     "G38.2": "G38.2 Z-1 F10", "G38.3": "G38.3 Z-1 F10", "G38.4": "G38.4 Z-1 F10",
     "G38.5": "G38.5 Z-1 F10", "G73": "G73 X1 Y1 Z-1 R1 Q0.1 F10", "G76": "G76 P0.1 Z-1 I-0.1 J0.1 K0.2",
@@ -22,7 +21,7 @@ LINES = {
     "G84": "G84 X1 Y1 Z-1 R1 F10", "G85": "G85 X1 Y1 Z-1 R1 F10", "G86": "G86 X1 Y1 Z-1 R1 P1 F10",
     "G87": "G87 X1 Y1 Z-1 R1 I1 J1 K1 F10", "G88": "G88 X1 Y1 Z-1 R1 P1 F10",
     "G89": "G89 X1 Y1 Z-1 R1 P1 F10",
-    "M6": "M6", "M61": "M61 Q1", "M19": "M19 R90 Q1 P0", "M62": "M62 P1", "M63": "M63 P1",
+    "M19": "M19 R90 Q1 P0", "M62": "M62 P1", "M63": "M63 P1",
     "M64": "M64 P1", "M65": "M65 P1", "M66": "M66 P0 L0", "M67": "M67 E0 Q1", "M68": "M68 E0 Q1",
     "M70": "M70", "M71": "M71", "M72": "M72", "M73": "M73",
 }
@@ -46,9 +45,3 @@ def test_refused_before_anything_runs(name: str) -> None:
     assert caught.value.message == f"{name} is not supported yet"
     assert caught.value.line == 2
     assert [line for _, _, line in sink.ops if line == 2] == []  # nothing of line 2 ran
-
-
-def test_t_word_is_refused() -> None:
-    with pytest.raises(ngc.NgcError) as caught:
-        ngc.interpret("T1\nM2\n", ListSink())
-    assert caught.value.message == "T words (tool selection) are not supported yet"

@@ -171,8 +171,8 @@ def _machine_options() -> argparse.ArgumentParser:
                        help="apply the INI file's [RS274NGC] settings (subroutine path, "
                        "Fanuc-style programs, #<_ini[SECTION]NAME> parameters)")
     group.add_argument("-t", metavar="TOOLS", dest="tool_table",
-                       help="the tool table: checked to be a readable file, not used yet "
-                       "(tool tables are not implemented)")
+                       help="the tool table, in LinuxCNC's format (T P X Y Z A B C U V W D I J Q "
+                       ";comment, inches); default: rs274's sample table (tools 1, 2, 3, 99999)")
     group.add_argument("-v", metavar="VARS", dest="var_file",
                        help="read the parameter file (only ngc rs274 writes it back)")
     group.add_argument("--max-iterations", metavar="N", type=_positive,

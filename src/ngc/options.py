@@ -6,9 +6,10 @@
     apply the INI file's [RS274NGC] settings (:meth:`Interpreter.configure`): the subroutine
     path, Fanuc-style programs, ``#<_ini[SECTION]NAME>`` parameters.
 ``-t TOOLS``
-    a tool table.  Tool tables are not implemented yet: ``canon`` and ``check`` check that the
-    file is a regular file they can open and keep its name in :attr:`MachineOptions.tool_table`
-    for the tool support to come; ``rs274`` accepts it and says nothing, as rs274 does.
+    a tool table in LinuxCNC's format (:mod:`ngc.config.tooltable`), read at the start.  Without
+    ``-t`` the table rs274 reads when given none (:data:`DEFAULT_TABLE`: tools 1, 2, 3 and
+    99999).  ``rs274`` takes a file it cannot read as an empty table and reports a line it
+    cannot read on stdout, as rs274 does; ``canon`` and ``check`` refuse both.
 ``-v VARS``
     a parameter file (LinuxCNC's ``.var``), loaded with :func:`read_var_file` and
     :meth:`Interpreter.load_parameters`.  Only ``rs274`` writes it back; ``canon`` and ``check``
@@ -30,6 +31,7 @@ from dataclasses import dataclass, field
 
 from .canon.ops import Sink
 from .config.ini import Ini, Rs274ngcSettings
+from .config.tooltable import DEFAULT_TABLE, Tools, ToolTable, read_tool_table
 from .config.varfile import read_var_file
 from .errors import NgcConfigError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
@@ -42,7 +44,6 @@ class MachineOptions:
 
     ini_file: str | None = None
     tool_table: str | None = None
-    """Kept for the tool support to come: nothing reads it yet."""
     var_file: str | None = None
     max_iterations: int = DEFAULT_MAX_ITERATIONS
 
@@ -54,6 +55,7 @@ class Setup:
     settings: Rs274ngcSettings = field(default_factory=Rs274ngcSettings)
     ini: Ini | None = None
     parameters: dict[int, float] | None = None
+    tools: ToolTable = DEFAULT_TABLE
 
 
 def parse_positive(text: str) -> int | None:
@@ -84,7 +86,7 @@ def require_regular_file(path: str, what: str) -> None:
 
 
 def load_setup(options: MachineOptions) -> Setup:
-    """Load the INI and parameter files strictly (``canon``, ``check``); check the tool table.
+    """Load the INI, tool table and parameter files strictly (``canon``, ``check``).
 
     Raises :class:`NgcConfigError` with a message naming the file.  What rs274 reports about an
     INI file's settings and carries on from is in ``settings.messages``.
@@ -104,7 +106,10 @@ def load_setup(options: MachineOptions) -> Setup:
         except NgcConfigError as exc:
             raise NgcConfigError(f"parameter file {options.var_file}: {exc.message}",
                                  file=options.var_file) from None
-    return Setup(Rs274ngcSettings.from_ini(ini, os.getcwd()), ini, parameters)
+    tools = DEFAULT_TABLE
+    if options.tool_table is not None:
+        tools = read_tool_table(options.tool_table, strict=True)
+    return Setup(Rs274ngcSettings.from_ini(ini, os.getcwd()), ini, parameters, tools)
 
 
 def new_interpreter(
@@ -120,6 +125,7 @@ def new_interpreter(
     interp = Interpreter(sink, block_delete=block_delete, max_iterations=options.max_iterations,
                          fast=fast, write_files=write_files)
     interp.configure(setup.settings, setup.ini)
+    interp.machine.state.tools = Tools(setup.tools)
     if setup.parameters is not None:
         interp.load_parameters(setup.parameters, setup.settings.disable_g92_persistence)
     return interp

@@ -27,6 +27,7 @@ from typing import TextIO
 from .canon import ops
 from .canon.text import TextSink
 from .config.ini import Ini, Rs274ngcSettings
+from .config.tooltable import DEFAULT_TABLE, read_tool_table
 from .config.varfile import read_var_file, write_var_file
 from .errors import NgcConfigError, NgcError, NgcOpenError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
@@ -64,7 +65,9 @@ canonical machine operations (the transcript) on stdout, or into the output file
 stderr, the exit status is 0 or 1; all as rs274 does, byte for byte.
 
 Options (rs274's own; options may also follow the file names):
-    -t FILE   the tool table: accepted and not read (tool tables are not implemented yet)
+    -t FILE   the tool table (LinuxCNC's format: T P X Y Z A B C U V W D I J Q ;comment); a
+              file that cannot be read is an empty table; without -t, rs274's sample table
+              (T1 D0.125 Z0.511, T2 D0.0625 Z0.1, T3 D0.201 Z1.273, T99999 Z0.1; inches)
     -v FILE   the parameter file: read at the start, written back at the start and at the end
     -i FILE   the INI file: its [RS274NGC] settings (SUBROUTINE_PATH, DISABLE_FANUC_STYLE_SUB,
               ...) and the #<_ini[SECTION]NAME> parameters
@@ -256,8 +259,13 @@ def _interpret(o: Rs274Options, sink: TextSink, err: TextIO, fast: bool,
                terminal_output: bool) -> int:
     """From the INI file to the final ON_RESET, in rs274's order."""
     settings, ini = _settings(o, err)
-    interp = new_interpreter(sink, o.machine(), Setup(settings, ini), block_delete=o.block_delete,
-                             fast=fast)
+    tools = DEFAULT_TABLE
+    if o.tool_table is not None:
+        tools = read_tool_table(o.tool_table)  # unreadable: an empty table, as rs274 has it
+        for line in tools.skipped_report(_as_read(o.tool_table)).splitlines():
+            sink.print_text(line)
+    interp = new_interpreter(sink, o.machine(), Setup(settings, ini, tools=tools),
+                             block_delete=o.block_delete, fast=fast)
     interp.emit(ops.UseLengthUnits("CANON_UNITS_MM"))
     if o.var_file is not None:
         try:

@@ -114,6 +114,46 @@ class UseToolLengthOffset(NamedTuple):
     w: float
 
 
+# -- tools ----------------------------------------------------------------------------------------
+class SelectTool(NamedTuple):
+    tool: int  # the tool number of the T word
+
+
+class StartChange(NamedTuple):
+    """No arguments."""
+
+
+class ChangeTool(NamedTuple):
+    slot: int  # the selected tool's slot in the tool table (1-based, file order; 0: none)
+
+
+class ChangeToolNumber(NamedTuple):
+    slot: int  # M61: the slot of the tool now in the spindle
+
+
+class SetToolTableEntry(NamedTuple):
+    """G10 L1/L10/L11: a tool's new data, in inches (rs274 prints no diameter)."""
+
+    slot: int
+    tool: int
+    x: float
+    y: float
+    z: float
+    a: float
+    b: float
+    c: float
+    u: float
+    v: float
+    w: float
+    frontangle: float
+    backangle: float
+    orientation: int
+
+
+class ReloadTooldata(NamedTuple):
+    """No arguments (G10 L0)."""
+
+
 # -- offsets --------------------------------------------------------------------------------------
 class SetG5xOffset(NamedTuple):
     system: int
@@ -275,6 +315,13 @@ TEMPLATES: Mapping[type, str] = MappingProxyType(
         SetMotionControlContinuous: "SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, %f)",
         SetNaivecamTolerance: "SET_NAIVECAM_TOLERANCE(%.4f)",
         UseToolLengthOffset: "USE_TOOL_LENGTH_OFFSET(%.4f %.4f %.4f, %.4f %.4f %.4f, %.4f %.4f %.4f)",
+        SelectTool: "SELECT_TOOL(%d)",
+        StartChange: "START_CHANGE()",
+        ChangeTool: "CHANGE_TOOL(%d)",
+        ChangeToolNumber: "CHANGE_TOOL_NUMBER(%d)",
+        SetToolTableEntry: "SET_TOOL_TABLE_ENTRY(%d, %d, %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f, "
+                           "%.4f, %.4f, %d)",
+        ReloadTooldata: "RELOAD_TOOLDATA()",
         SetG5xOffset: "SET_G5X_OFFSET(%d, %.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
         SetG92Offset: "SET_G92_OFFSET(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
         SetXYRotation: "SET_XY_ROTATION(%.4f)",

@@ -23,8 +23,10 @@ def check(st: State, r: Words, table: CodeTable) -> None:
     _check_supported(r, table)
     non_modal = g.get(codes.G_NON_MODAL)
     motion = g.get(codes.G_MOTION)
+    if "t" in r.w and r.w["t"] < 0:
+        raise NgcSemanticError("Negative tool id (tool not found)")
     if r.has_axes:
-        _check_axis_users(st, motion, non_modal, table)
+        _check_axis_users(st, r, motion, non_modal, table)
     if non_modal == codes.G_MACHINE_COORDINATES:
         _check_g53(st, r, motion)
     if r.others:
@@ -45,6 +47,8 @@ def implied_motion(st: State, r: Words, table: CodeTable) -> int | None:
     unless a group-0 code on the line takes the axis words.  None if it runs none."""
     if codes.G_MOTION in r.g or not r.moves or r.g.get(codes.G_NON_MODAL) in table.axis_users:
         return None
+    if r.g.get(codes.G_TOOL_LENGTH) in table.modal_axis_users:
+        return None
     return st.motion
 
 
@@ -56,8 +60,6 @@ def _check_supported(r: Words, table: CodeTable) -> None:
     for code in r.m.values():
         if table.m[code].handler is None:
             raise NgcSemanticError(f"M{code} is not supported yet")
-    if "t" in r.w:
-        raise NgcSemanticError("T words (tool selection) are not supported yet")
 
 
 def _check_g53(st: State, r: Words, motion: int | None) -> None:
@@ -69,11 +71,13 @@ def _check_g53(st: State, r: Words, motion: int | None) -> None:
         raise NgcSemanticError("Cannot use g53 incremental")
 
 
-def _check_axis_users(st: State, motion: int | None, non_modal: int | None, table: CodeTable) -> None:
+def _check_axis_users(
+    st: State, r: Words, motion: int | None, non_modal: int | None, table: CodeTable,
+) -> None:
     axis_user = non_modal in table.axis_users
     if motion is not None and motion != codes.G_CANCEL_MOTION and axis_user:
         raise NgcSemanticError("Cannot use two g codes that both use axis values")
-    if axis_user:
+    if axis_user or r.g.get(codes.G_TOOL_LENGTH) in table.modal_axis_users:
         return
     if motion == codes.G_CANCEL_MOTION:
         raise NgcSemanticError("Cannot use axis values with g80")
@@ -112,9 +116,16 @@ def _check_g10(r: Words) -> None:
     l_word = w.get("l")
     if l_word not in _G10_L:
         raise NgcSemanticError("Line with G10 does not have L0, L1, L10, L11, L2, or L20")
-    if l_word not in (2.0, 20.0):
-        raise NgcSemanticError("G10 L1/L10/L11 (tool table) is not supported yet")
+    if l_word == 0.0:
+        return
     p = w.get("p")
+    if l_word not in (2.0, 20.0):
+        # A tool number: rs274 rounds P2.5 up but refuses P2.4, before the range check.
+        if p is not None and 0.0001 < p - int(p) < 0.5:
+            raise NgcSemanticError("P value not an integer with G10")
+        if p is None or p + 0.5 < 1.0:
+            raise NgcSemanticError(f"P value out of range with G10 L{int(l_word)}")
+        return
     if p is None or p < 0 or p >= 10:
         raise NgcSemanticError(f"P value out of range (0-9) with G10 L{int(l_word)}")
     if 0.0001 < p - int(p) < 0.5:

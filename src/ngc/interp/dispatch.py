@@ -18,7 +18,7 @@ from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
 from .check import implied_motion
-from .handlers import coordinates, modes, motion, program
+from .handlers import coordinates, modes, motion, program, tools
 from .machine import Machine
 
 Handler = Callable[[Machine, Words, int], None]
@@ -79,7 +79,12 @@ HANDLERS: Mapping[str, Handler] = MappingProxyType({
     "plane": lambda m, r, code: modes.plane(m, code),
     "units": lambda m, r, code: modes.units(m, code),
     "cutter_comp_off": lambda m, r, code: modes.cutter_comp_off(m),
-    "tool_length_off": lambda m, r, code: modes.tool_length_off(m),
+    "tool_length_off": lambda m, r, code: tools.tool_length_off(m),
+    "tool_length": tools.tool_length,
+    "select_tool": lambda m, r, code: tools.select_tool(m, r.w["t"]),
+    "change_tool": lambda m, r, code: tools.change_tool(m),
+    "set_tool_number": lambda m, r, code: tools.set_tool_number(m, r),
+    "lathe_mode": lambda m, r, code: tools.lathe_mode(m, code),
     "select_system": lambda m, r, code: coordinates.select_system(m, code),
     "control_mode": lambda m, r, code: modes.control_mode(m, code, r),
     "distance_mode": lambda m, r, code: modes.distance_mode(m, code),
@@ -110,12 +115,15 @@ class Dispatcher:
         self.table = table
         self.g = {code: (row.step, _bind(row.handler, handlers)) for code, row in table.g.items()}
         self.m = {code: (row.step, _bind(row.handler, handlers)) for code, row in table.m.items()}
-        # The words that run (T has no handler yet: the check refuses it).
+        # The words that run (F, S, T).
         self.words = {letter: (step, handlers[name])
                       for letter, (step, name) in codes.WORD_STEPS.items() if name is not None}
 
     def convert(self, m: Machine, r: Words) -> None:
         """Run a checked block's steps in the order of execution."""
+        lathe = r.g.get(codes.G_LATHE)
+        if "x" in r.w and (m.state.lathe_diameter if lathe is None else lathe == 70):
+            r = _diameter_x(r)
         calls: list[tuple[int, Handler, int]] = []
         if r.comment is not None:
             calls.append((codes.STEP_COMMENT, _comment, 0))
@@ -141,6 +149,16 @@ class Dispatcher:
         calls.sort(key=_by_step)
         for _, fn, code in calls:
             fn(m, r, code)
+        if m.state.tool_changed:
+            tools.canon_position(m.state)
+
+
+def _diameter_x(r: Words) -> Words:
+    """G7: the block with its X word halved (a diameter), for every code that reads X."""
+    half = Words()
+    half.g, half.m, half.assigns, half.comment = r.g, r.m, r.assigns, r.comment
+    half.w = {**r.w, "x": r.w["x"] / 2.0}
+    return half.finish()
 
 
 def _bind(name: str | None, handlers: Mapping[str, Handler]) -> Handler | None:

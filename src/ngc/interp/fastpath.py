@@ -149,6 +149,8 @@ class FastPath:
         """A plain line: F, S, then the motion (explicit or modal), as the general path runs it."""
         m = self.m
         st = m.state
+        if st.lathe_diameter and "x" in w:
+            w = {**w, "x": w["x"] / 2.0}  # G7: an X word is a diameter
         if code is None and not _AXES.isdisjoint(w):
             code = st.motion  # the modal motion the axis words run (checked before F runs)
             if code == G_CANCEL_MOTION:

@@ -1,5 +1,5 @@
 """Program <-> machine coordinates: the G92/G52 offset, the XY rotation and the G5x origin
-(coordinates.adoc).  Pure functions of the :class:`~ngc.interp.state.State`."""
+and the tool length offset (coordinates.adoc).  Pure functions of the :class:`~ngc.interp.state.State`."""
 
 from __future__ import annotations
 
@@ -8,19 +8,24 @@ import math
 from .state import AXES, State
 
 Vec = list[float]
+_NO_TLO = (0.0,) * AXES
 
 
-def to_machine(st: State, prog: Vec) -> Vec:
-    """Program coordinates -> machine coordinates (G92 offset, XY rotation, G5x origin)."""
+def to_machine(st: State, prog: Vec, tlo: bool = True) -> Vec:
+    """Program coordinates -> machine coordinates (G92 offset, XY rotation, G5x origin, tool
+    length offset; ``tlo=False``: without the tool length offset)."""
     p = [prog[i] + st.g92[i] for i in range(AXES)]
     if st.rotation:
         p[0], p[1] = rotate(p[0], p[1], st.rotation)
-    return [p[i] + st.g5x[i] for i in range(AXES)]
+    t = st.tlo if tlo else _NO_TLO
+    return [p[i] + st.g5x[i] + t[i] for i in range(AXES)]
 
 
 def to_program(st: State, machine: Vec) -> Vec:
-    """Machine coordinates -> program coordinates."""
-    p = [machine[i] - st.g5x[i] for i in range(AXES)]
+    """Machine coordinates -> program coordinates.  rs274 takes the tool length offset off X Y Z
+    only (the rotary axes' offset counts the other way, in :func:`to_machine`, not here)."""
+    t = st.tlo
+    p = [machine[i] - st.g5x[i] - (t[i] if i < 3 else 0.0) for i in range(AXES)]
     # Rotated even by 0 degrees: rs274 does, which decides the sign of a zero (G53 X-0).
     p[0], p[1] = rotate(p[0], p[1], -st.rotation)
     return [p[i] - st.g92[i] for i in range(AXES)]

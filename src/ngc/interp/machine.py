@@ -15,6 +15,7 @@ from .state import State
 
 if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
+    from ..config.tooltable import ToolEntry, Tools
 
 
 class Machine:
@@ -41,6 +42,16 @@ class Machine:
         # How the program's text was decoded from its file's bytes (encoding, errors), so that a
         # file name in it names the file those bytes name; None: text given as str.
         self.encoding: tuple[str, str] | None = None
+
+    @property
+    def tools(self) -> Tools:
+        """The tool data: ``tools.find(number)`` gives a tool's entry (diameter in inches,
+        orientation, front and back angle) or None."""
+        return self.state.tools
+
+    def current_tool(self) -> ToolEntry:
+        """The entry of the tool in the spindle (what #5400-#5413 read; tool 0 when empty)."""
+        return self.state.tools.spindle
 
     def file_name(self, text: str) -> str:
         """A file name written in the program, as the operating system is to be given it: the

@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from ..config.ini import Ini, ini_parameter
+from ..config.tooltable import ToolEntry
 from ..errors import NgcRuntimeError
 from ..language.parser import MAX_PARAMETER
 from .frames import to_machine
@@ -26,6 +27,7 @@ COORD_SYSTEM = 5220
 G54_ORIGIN = 5221  # G54 X; each system takes 20 numbers, rotation at +9
 COORD_STRIDE = 20
 CURRENT_POSITION = 5420
+TOOL_DATA = 5400  # 5400 tool number, 5401-5409 offsets, 5410 diameter, 5411-5413 angles, orientation
 DEBUG_ENABLE = 5599  # 0 silences (DEBUG,...) comments
 # Tool-changer fault parameters: rs274 accepts the setting and keeps 0.
 IGNORED_WRITES = frozenset({5600, 5601})
@@ -63,7 +65,7 @@ PREDEFINED: dict[str, Getter] = {
     "_units_per_minute": _flag("feed_mode", 940),
     "_units_per_rev": _flag("feed_mode", 950),
     "_coord_system": lambda s: float(530 + 10 * s.coord_index if s.coord_index <= 6 else 584 + s.coord_index),
-    "_tool_offset": _flag("tool_offset", True),
+    "_tool_offset": lambda s: 1.0 if any(s.tlo) else 0.0,  # an offset not all zero in effect
     "_retract_r_plane": _flag("retract_r", True),
     "_retract_old_z": _flag("retract_r", False),
     "_spindle_rpm_mode": lambda s: 1.0,
@@ -96,10 +98,10 @@ PREDEFINED: dict[str, Getter] = {
     "_u": lambda s: 0.0,
     "_v": lambda s: 0.0,
     "_w": lambda s: 0.0,
-    "_current_tool": lambda s: 0.0,
-    "_current_pocket": lambda s: 1.0,
-    "_selected_tool": lambda s: 0.0,
-    "_selected_pocket": lambda s: -1.0,
+    "_current_tool": lambda s: float(s.tools.spindle.number),
+    "_current_pocket": lambda s: float(s.tools.pocket(s.tool_index)),
+    "_selected_tool": lambda s: float(s.selected_tool),
+    "_selected_pocket": lambda s: float(s.tools.pocket(s.selected_index)),
     "_value": lambda s: s.value,
     "_value_returned": lambda s: s.value_returned,
     "_task": lambda s: 0.0,
@@ -127,6 +129,8 @@ class Parameters:
         if CURRENT_POSITION <= index < CURRENT_POSITION + 9:
             axis = index - CURRENT_POSITION
             return self.state.pos[axis] if axis < AXES else 0.0
+        if TOOL_DATA <= index < TOOL_DATA + 14:
+            return tool_parameter(self.state.tools.spindle, index - TOOL_DATA)
         return self.numbered[index]
 
     def named(self, name: str) -> float:
@@ -174,6 +178,16 @@ class Parameters:
         else:
             self.locals[-1][target] = value
 
+
+
+def tool_parameter(entry: ToolEntry, k: int) -> float:
+    """#5400+k of the tool in the spindle: number, offsets X..W, diameter, front angle, back
+    angle, orientation (inches, as the table holds them)."""
+    if k == 0:
+        return float(entry.number)
+    if k <= 9:
+        return entry.offsets[k - 1]
+    return (entry.diameter, entry.frontangle, entry.backangle, float(entry.orientation))[k - 10]
 
 
 def check_writable(name: str) -> None:

@@ -7,6 +7,8 @@ names the codes that set it.  Codes are integers, the G number times ten.
 
 from __future__ import annotations
 
+from ..config.tooltable import Tools
+
 AXES = 6  # X Y Z A B C: the standalone machine's axes
 LINEAR = (True, True, True, False, False, False)
 MM_PER_INCH = 25.4
@@ -21,6 +23,8 @@ class State:
         "arc_absolute",
         "blocks_deleted",
         "call_level",
+        "canon_anchor",
+        "canon_pos",
         "ccomp",
         "control_mode",
         "coord_index",
@@ -43,10 +47,17 @@ class State:
         "pos",
         "retract_r",
         "rotation",
+        "selected_index",
+        "selected_tool",
         "speed",
         "speed_override",
         "spindle",
+        "tlo",
+        "tool_changed",
+        "tool_index",
         "tool_offset",
+        "tool_set",
+        "tools",
         "value",
         "value_returned",
 )
@@ -70,6 +81,21 @@ class State:
         self.retract_r = True  # G99 True (R plane, as rs274 starts), G98 False
         self.ccomp = 400  # G40 400
         self.tool_offset = False  # G43 on
+        # Tools.  ``tools`` is the machine's tool data (slot 0: the spindle's entry).
+        self.tools = Tools()
+        self.tlo = [0.0] * 9  # tool length offset X Y Z A B C U V W in effect, program units
+        # The slot the spindle holds (M6, M61).  rs274 starts with 1, the first entry's slot,
+        # though the spindle's entry is empty: #<_current_pocket> reads that entry's pocket.
+        self.tool_index = 1
+        self.selected_index = 0  # the slot the last T word selected (0: none / T0)
+        self.selected_tool = 0  # the last T word
+        # Where the canon thinks the current point is, when a tool length offset change moved
+        # the interpreter's current point but not the canon's (``canon_anchor`` is that
+        # ``pos`` list; a move replaces it).  M6 and M61 take the canon's point back.
+        self.canon_pos: list[float] | None = None
+        self.canon_anchor: list[float] | None = None
+        self.tool_changed = False  # M6 or M61 ran in the line being executed
+        self.tool_set = False  # M6 or M61 ran: G43 applies the slot ``tool_index``
         self.lathe_diameter = False  # G7
         self.feed = 0.0  # F
         self.speed = 0.0  # S

@@ -176,9 +176,11 @@ _G: dict[int, Code] = {
     420: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "d"),
     421: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "dl"),
     # group 8: tool length offset
-    430: _no(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "h"),
-    431: _no(G_TOOL_LENGTH, STEP_TOOL_LENGTH),
-    432: _no(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "h"),
+    430: Code(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "tool_length", "h"),
+    # G43.1 / G43.2 take the line's axis words (an explicit motion code on the line uses them
+    # too; the modal motion does not run).
+    431: Code(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "tool_length", axes=True),
+    432: Code(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "tool_length", "h", axes=True),
     490: Code(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "tool_length_off"),
     # group 10: canned-cycle return mode
     980: Code(G_RETRACT, STEP_RETRACT, "retract_mode"),
@@ -201,8 +203,8 @@ _G: dict[int, Code] = {
     960: _no(G_SPINDLE_MODE, STEP_SPINDLE_MODE, "d$"),
     970: Code(G_SPINDLE_MODE, STEP_SPINDLE_MODE, "", "$"),  # G97: the mode rs274 starts in
     # group 15: lathe diameter / radius mode
-    70: _no(G_LATHE, STEP_LATHE),
-    80: _no(G_LATHE, STEP_LATHE),
+    70: Code(G_LATHE, STEP_LATHE, "lathe_mode"),
+    80: Code(G_LATHE, STEP_LATHE, "lathe_mode"),
 }
 
 _M: dict[int, Code] = {
@@ -215,8 +217,8 @@ _M: dict[int, Code] = {
     4: Code(M_SPINDLE, STEP_SPINDLE, "spindle", "$"),
     5: Code(M_SPINDLE, STEP_SPINDLE, "spindle", "$"),
     19: _no(M_SPINDLE, STEP_SPINDLE, "rpq$"),
-    6: _no(M_TOOL, STEP_TOOL_CHANGE),
-    61: _no(M_TOOL, STEP_TOOL_CHANGE, "q"),
+    6: Code(M_TOOL, STEP_TOOL_CHANGE, "change_tool"),
+    61: Code(M_TOOL, STEP_TOOL_CHANGE, "set_tool_number", "q"),
     7: Code(M_COOLANT, STEP_COOLANT, "coolant"),
     8: Code(M_COOLANT, STEP_COOLANT, "coolant"),
     9: Code(M_COOLANT, STEP_COOLANT, "coolant"),
@@ -241,11 +243,11 @@ _M: dict[int, Code] = {
     99: Code(M_USER, STEP_USER_M, "subprogram"),
 }
 
-# The words that take a step of their own (and a handler), as codes do.  T is not supported yet.
+# The words that take a step of their own (and a handler), as codes do.
 WORD_STEPS: Mapping[str, tuple[int, str | None]] = MappingProxyType({
     "f": (STEP_FEED, "feed_rate"),
     "s": (STEP_SPEED, "spindle_speed"),
-    "t": (STEP_TOOL, None),
+    "t": (STEP_TOOL, "select_tool"),
 })
 
 # A word that no code on its line gives a use to: rs274's message, in the order rs274 checks.
@@ -280,7 +282,7 @@ FREE_LETTERS = frozenset(AXIS_LETTERS + "fs")
 class CodeTable:
     """A dialect's G and M codes, and what is derived from them once."""
 
-    __slots__ = ("axis_users", "g", "g_by_value", "m")
+    __slots__ = ("axis_users", "g", "g_by_value", "m", "modal_axis_users")
 
     def __init__(self, g: Mapping[int, Code], m: Mapping[int, Code]) -> None:
         self.g = MappingProxyType(dict(g))
@@ -289,7 +291,11 @@ class CodeTable:
         self.g_by_value: Mapping[float, tuple[int, int]] = MappingProxyType(
             {code / 10: (row.group, code) for code, row in g.items()}
         )
-        self.axis_users = frozenset(code for code, row in g.items() if row.axes)
+        self.axis_users = frozenset(code for code, row in g.items()
+                                    if row.axes and row.group == G_NON_MODAL)
+        # Modal codes that take the line's axis words (G43.1, G43.2): no modal motion runs.
+        self.modal_axis_users = frozenset(code for code, row in g.items()
+                                          if row.axes and row.group != G_NON_MODAL)
 
 
 LINUXCNC = CodeTable(_G, _M)

@@ -8,6 +8,8 @@ dialect's code table — shared by the parser's constant lines and the interpret
 
 from __future__ import annotations
 
+import math
+
 from ..errors import NgcSemanticError, NgcSyntaxError
 from .codes import AXIS_LETTERS, FREE_LETTERS, G_CANCEL_MOTION, G_MOTION, POLAR_LETTERS, CodeTable
 
@@ -46,9 +48,14 @@ class Words:
 
 
 def integer_value(value: float) -> int:
-    """``value`` as an integer if it is within 0.0001 of one (overview.adoc, "Numbers")."""
-    k = round(value)
-    if abs(value - k) > 0.0001:
+    """``value`` as an integer if it is close to one (overview.adoc, "Numbers"), as rs274 reads
+    it: from below, its fraction above its floor must be more than 0.9999 (``T1.9999`` is
+    refused, ``T1.99995`` is 2); from above, at most 0.0001."""
+    k = math.floor(value)
+    fraction = value - k
+    if fraction > 0.9999:
+        return math.ceil(value)
+    if fraction > 0.0001:
         raise NgcSyntaxError("Non integer value for integer")
     return int(k)
 

@@ -24,6 +24,7 @@ from ..parameters import (
     G92_OFFSET,
 )
 from ..state import AXES, LINEAR
+from . import tools
 
 if TYPE_CHECKING:
     from ..machine import Machine
@@ -106,11 +107,15 @@ def select_system(it: Machine, code: int) -> None:
 
 # -- G10 ----------------------------------------------------------------------------------------
 def g10(it: Machine, r: Resolved) -> None:
-    """G10 L2 P: set an origin; G10 L20 P: set it so the current point has the given coordinates.
-    (L and P were checked before the line ran.)"""
+    """G10 L2 P: set an origin; G10 L20 P: set it so the current point has the given coordinates;
+    L0, L1, L10, L11: the tool table (:func:`tools.g10_tools`).  (L and P were checked before
+    the line ran.)"""
     st = it.state
     w = r.w
     l_word = int(w["l"])
+    if l_word not in (2, 20):
+        tools.g10_tools(it, r, l_word)
+        return
     p = w["p"]
     if "i" in w or "j" in w:
         raise NgcSemanticError(f"I J words not allowed with G10 L{l_word}")
@@ -150,7 +155,7 @@ def _l20_origin(it: Machine, values: dict[int, float], index: int) -> dict[int, 
     origin in both X and Y.
     """
     st = it.state
-    machine = _keep_machine_position(it)
+    machine = to_machine(st, st.pos, tlo=False)  # the origin is set without the tool offset
     base = G54_ORIGIN + COORD_STRIDE * (index - 1)
     numbered = it.params.numbered
     rot = numbered[base + 9]

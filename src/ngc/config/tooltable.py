@@ -1,0 +1,160 @@
+"""Tool table files in LinuxCNC's format (tool-compensation.adoc, "Tool Table Format").
+
+One tool a line, words in any order: ``T`` tool number, ``P`` pocket, ``X Y Z A B C U V W``
+offsets, ``D`` diameter, ``I`` front angle, ``J`` back angle, ``Q`` orientation, then an optional
+``;comment``.  Letters may be lower case.  Values are in inches (the standalone machine's units)
+and are kept as written: a program sees them converted to its units.
+
+:func:`parse_tool_table` gives a :class:`ToolTable`, a value: its entries in file order (the
+1-based *index* rs274 prints in ``CHANGE_TOOL``) and the lines it skipped, as rs274 skips them
+(a word with another letter, a value that is no number): rs274 reports each on stdout and goes on.
+:data:`DEFAULT_TABLE` is the table rs274 reads when it is given none.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import NamedTuple
+
+from ..errors import NgcConfigError
+
+OFFSET_LETTERS = "xyzabcuvw"
+_NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
+
+
+class ToolEntry(NamedTuple):
+    """One tool: offsets X Y Z A B C U V W, diameter and lengths in inches, angles in degrees."""
+
+    number: int
+    pocket: int
+    offsets: tuple[float, ...] = (0.0,) * 9
+    diameter: float = 0.0
+    frontangle: float = 0.0
+    backangle: float = 0.0
+    orientation: int = 0
+    comment: str = ""
+
+
+# The slot of a line that starts with a tool number and is skipped: no tool is found there.
+UNREAD = ToolEntry(-1, -1)
+# The spindle's entry when no tool was ever loaded.
+EMPTY_SPINDLE = ToolEntry(0, -1)
+
+
+class ToolTable(NamedTuple):
+    """A tool table as read: entries in file order, and the lines skipped."""
+
+    entries: tuple[ToolEntry, ...] = ()
+    skipped: tuple[str, ...] = ()
+
+    def find(self, number: int) -> ToolEntry | None:
+        """The first entry of tool ``number``, or None."""
+        for entry in self.entries:
+            if entry.number == number and number >= 0:
+                return entry
+        return None
+
+    def skipped_report(self, name: str) -> str:
+        """What rs274 prints on stdout for the skipped lines of file ``name``."""
+        return "".join(f"File: {name} Unrecognized line skipped:\n    {line}\n" for line in self.skipped)
+
+
+def _number(text: str) -> float | None:
+    """The number a word's value starts with (C's strtod reads a prefix), or None."""
+    match = _NUMBER.match(text)
+    return float(match.group(0)) if match else None
+
+
+def parse_line(line: str) -> ToolEntry | str | None:
+    """One line: an entry, None (blank or comment only), or the line itself if it is skipped."""
+    body, _, comment = line.partition(";")
+    words = body.split()
+    if not words:
+        return None
+    fields: dict[str, float] = {}
+    for word in words:
+        letter = word[0].lower()
+        value = _number(word[1:])
+        if letter not in "tp" + OFFSET_LETTERS + "dijq" or value is None:
+            return line
+        fields[letter] = value
+    if "t" not in fields:
+        return None
+    offsets = tuple(fields.get(letter, 0.0) for letter in OFFSET_LETTERS)
+    return ToolEntry(int(fields["t"]), int(fields.get("p", 0)), offsets, fields.get("d", 0.0),
+                     fields.get("i", 0.0), fields.get("j", 0.0), int(fields.get("q", 0)),
+                     comment.strip())
+
+
+def parse_tool_table(text: str) -> ToolTable:
+    """A tool table file's text."""
+    entries: list[ToolEntry] = []
+    skipped: list[str] = []
+    for raw in text.splitlines():
+        line = raw.rstrip("\r\n")
+        found = parse_line(line)
+        if isinstance(found, str):
+            skipped.append(found)
+            first = found.split()[0]
+            if first[0] in "tT" and _number(first[1:]) is not None:
+                entries.append(UNREAD)  # rs274 gave the line its slot before it gave up
+        elif found is not None:
+            entries.append(found)
+    return ToolTable(tuple(entries), tuple(skipped))
+
+
+def read_tool_table(path: str, *, strict: bool = False) -> ToolTable:
+    """The tool table in file ``path``.  rs274 takes a file it cannot read as an empty table;
+    ``strict`` (``ngc canon``/``check``) refuses it, and a line that would be skipped."""
+    try:
+        with open(path, encoding="latin-1") as handle:
+            table = parse_tool_table(handle.read())
+    except OSError as exc:
+        if strict:
+            raise NgcConfigError(f"cannot read tool table {path}: {exc.strerror}", file=path) from None
+        return ToolTable()
+    if strict and table.skipped:
+        raise NgcConfigError(f"tool table {path}: unrecognized line: {table.skipped[0].strip()}",
+                             file=path)
+    return table
+
+
+DEFAULT_TABLE = parse_tool_table(
+    "T1 P1 D0.125000 Z+0.511000 ;1/8 end mill\n"
+    "T2 P2 D0.062500 Z+0.100000 ;1/16 end mill\n"
+    "T3 P3 D0.201000 Z+1.273000 ;#7 tap drill\n"
+    "T99999 P123     Z+0.100000 ;big tool number\n"
+)
+
+
+class Tools:
+    """The machine's tool data while a program runs: slot 0 is the spindle, slots 1..n the
+    table's entries in file order (G10 L1/L10/L11 replace them)."""
+
+    __slots__ = ("slots",)
+
+    def __init__(self, table: ToolTable = DEFAULT_TABLE) -> None:
+        self.slots: list[ToolEntry] = [EMPTY_SPINDLE, *table.entries]
+
+    def find(self, number: int) -> ToolEntry | None:
+        """The first entry of tool ``number`` in the table (not the spindle), or None."""
+        index = self.index(number)
+        return None if index is None else self.slots[index]
+
+    def index(self, number: int) -> int | None:
+        """The slot of tool ``number`` (1-based, file order), or None."""
+        if number < 0:
+            return None
+        for i in range(1, len(self.slots)):
+            if self.slots[i].number == number:
+                return i
+        return None
+
+    def pocket(self, index: int) -> int:
+        """The pocket of the entry in slot ``index`` (-1 for no such slot), as rs274 reads it."""
+        return self.slots[index].pocket if 0 <= index < len(self.slots) else -1
+
+    @property
+    def spindle(self) -> ToolEntry:
+        """The entry of the tool in the spindle (#5400-#5413 read it)."""
+        return self.slots[0]

@@ -1,0 +1,252 @@
+"""Tools: T, M6, M61, G43/G43.1/G43.2/G49, G10 L0/L1/L10/L11, G7/G8 (g-code.adoc, m-code.adoc,
+other-code.adoc), as rs274 2.9.0~pre1 does them.
+
+The machine's tool data is ``state.tools``: slot 0 is the spindle's entry (what #5400-#5413
+read), slots 1..n the table's entries in file order.  ``CHANGE_TOOL`` and ``CHANGE_TOOL_NUMBER``
+print a slot, not a tool number.  Tool data are in inches; the tool length offset in effect
+(``state.tlo``) is in program units, as ``USE_TOOL_LENGTH_OFFSET`` prints it.
+
+A change of the tool length offset keeps the machine still: the current point, in program
+coordinates, moves by the change.  The canon does not follow that, and M6 and M61 take the
+canon's current point back (``state.canon_pos``), as rs274 does.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ...canon import ops
+from ...config.tooltable import ToolEntry
+from ...errors import NgcSemanticError
+from ...language.codes import AXIS_LETTERS
+from ..frames import Vec, to_machine
+from ..parameters import COORD_STRIDE, G54_ORIGIN
+from ..state import AXES, LINEAR
+
+if TYPE_CHECKING:
+    from ...language.words import Words
+    from ..machine import Machine
+    from ..state import State
+
+# Which of the nine offsets X Y Z A B C U V W are lengths (converted between units).
+_LINEAR9 = (True, True, True, False, False, False, True, True, True)
+_G59_3 = 9  # the coordinate system G10 L11 measures from
+
+
+def _not_found(number: int) -> NgcSemanticError:
+    return NgcSemanticError(f"Requested tool {number} not found in the tool table")
+
+
+def _to_program_units(st: State, offsets: tuple[float, ...]) -> list[float]:
+    k = st.units_factor
+    return [v * k if _LINEAR9[i] else v for i, v in enumerate(offsets)]
+
+
+def _lookup(it: Machine, number: int) -> ToolEntry:
+    """The entry of tool ``number``; 0 is the tool in the spindle."""
+    tools = it.state.tools
+    if number == 0:
+        return _current(it.state)
+    entry = tools.find(number) if number > 0 else None
+    if entry is None:
+        raise _not_found(number)
+    return entry
+
+
+def _current(st: State) -> ToolEntry:
+    """The tool G43 applies: the slot M6 or M61 last put in the spindle (M61 loads no entry);
+    before any, the spindle's empty entry."""
+    return st.tools.slots[st.tool_index] if st.tool_set else st.tools.spindle
+
+
+# -- T, M6, M61 ---------------------------------------------------------------------------------
+def select_tool(it: Machine, t: float) -> None:
+    """T: select the tool the next M6 loads (T0: none).  A negative T was refused by the check."""
+    st = it.state
+    number = int(t)
+    if number == 0:
+        index = 0
+    else:
+        found = st.tools.index(number)
+        if found is None:
+            raise _not_found(number)
+        index = found
+    it.emit(ops.SelectTool(number))
+    st.selected_index = index
+    st.selected_tool = number
+
+
+def change_tool(it: Machine) -> None:
+    """M6: load the selected slot (the spindle keeps its entry when none is selected)."""
+    st = it.state
+    if st.ccomp != 400:
+        raise NgcSemanticError("Cannot change tools with cutter radius compensation on")
+    index = st.selected_index
+    it.emit(ops.StartChange())
+    st.spindle = 0  # the spindle stops for the change
+    it.emit(ops.StopSpindleTurning(0))
+    it.emit(ops.ChangeTool(index))
+    if index > 0:
+        st.tools.slots[0] = st.tools.slots[index]
+    st.tool_index = index
+    st.tool_set = st.tool_changed = True
+
+
+def set_tool_number(it: Machine, r: Words) -> None:
+    """M61 Q: the spindle holds tool Q, without a change (its entry is not loaded)."""
+    st = it.state
+    q = r.w.get("q")
+    number = None if q is None else int(_round(q))
+    if number is None or number < 0:
+        raise NgcSemanticError("Need non-negative Q-word to specify tool number with M61")
+    index = 0 if number == 0 else st.tools.index(number)
+    if index is None:
+        raise _not_found(number)
+    it.emit(ops.ChangeToolNumber(index))
+    st.tool_index = index
+    st.tool_set = st.tool_changed = True
+
+
+def _round(value: float) -> float:
+    """rs274 rounds a tool number to the nearest integer, halves away from zero."""
+    return float(int(value + 0.5)) if value >= 0 else -float(int(-value + 0.5))
+
+
+def canon_position(st: State) -> None:
+    """At the end of a line with M6 or M61 rs274 takes the canon's current point as its own."""
+    st.tool_changed = False
+    if st.canon_pos is not None and st.canon_anchor is st.pos:
+        st.pos = st.canon_pos
+    st.canon_pos = st.canon_anchor = None
+
+
+# -- tool length offsets ------------------------------------------------------------------------
+def tool_length(it: Machine, r: Words, code: int) -> None:
+    """G43 [H], G43.1 axes, G43.2 H."""
+    st = it.state
+    if st.ccomp != 400:
+        raise NgcSemanticError("Cannot change tool offset with cutter radius compensation on")
+    w = r.w
+    if code == 430:
+        h = w.get("h")
+        entry = _current(st) if h is None else _lookup(it, int(h))
+        new = _to_program_units(st, entry.offsets)
+    elif code == 431:
+        new = list(st.tlo)
+        for i, letter in enumerate(AXIS_LETTERS):
+            if letter in w:
+                new[i] = w[letter]
+    else:
+        has_axes = any(letter in w for letter in AXIS_LETTERS)
+        h = w.get("h")
+        if h is None and not has_axes:
+            raise NgcSemanticError("G43.2: No axes specified and H word missing")
+        if h is not None and has_axes:
+            raise NgcSemanticError("G43.2: Can not have both H and axis words")
+        # rs274 2.9.0~pre1 looks the axes form up as tool -1.
+        entry = _lookup(it, -1 if h is None else int(h))
+        added = _to_program_units(st, entry.offsets)
+        new = [st.tlo[i] + added[i] for i in range(9)]
+    _apply(it, new)
+
+
+def tool_length_off(it: Machine) -> None:
+    """G49: no tool length offset."""
+    st = it.state
+    if st.ccomp != 400:
+        raise NgcSemanticError("Cannot change tool offset with cutter radius compensation on")
+    _apply(it, [0.0] * 9)
+
+
+def _apply(it: Machine, new: list[float]) -> None:
+    """Put a tool length offset in effect: the current point moves by the change."""
+    st = it.state
+    if st.canon_pos is None or st.canon_anchor is not st.pos:
+        st.canon_pos = list(st.pos)
+    old = st.tlo
+    st.tlo = new
+    st.pos = [st.pos[i] + old[i] - new[i] for i in range(AXES)]
+    st.canon_anchor = st.pos
+    it.emit(ops.UseToolLengthOffset(*new))
+
+
+# -- G10 L0 / L1 / L10 / L11 ----------------------------------------------------------------------
+def g10_tools(it: Machine, r: Words, l_word: int) -> None:
+    """G10 L0 reloads the tool data (a no-op here); L1 sets a tool's entry from the words; L10 and
+    L11 set its offsets so the current point has the given coordinates (L10 with the current
+    offsets, L11 in G59.3 without G52/G92)."""
+    st = it.state
+    w = r.w
+    tools = st.tools
+    if l_word == 0:
+        if tools.spindle.number != 0:
+            raise NgcSemanticError(f"G10 L0 not allowed with loaded tool <{tools.spindle.number}>\n")
+        it.emit(ops.ReloadTooldata())
+        return
+    number = int(_round(w["p"]))
+    index = tools.index(number)
+    if index is None:
+        raise _not_found(number)
+    axes = [(i, w[letter]) for i, letter in enumerate(AXIS_LETTERS) if letter in w]
+    if not axes and not any(letter in w for letter in "rijq"):
+        raise NgcSemanticError("G10 L1 without offsets has no effect")
+    entry = tools.slots[index]
+    orientation = entry.orientation
+    q = w.get("q")
+    if q is not None and q != -1.0:
+        if q < 0 or abs(q - _round(q)) > 0.0001:
+            raise NgcSemanticError("Q number in G10 is not an integer")
+        if _round(q) > 9:
+            raise NgcSemanticError("Invalid tool orientation")
+        orientation = int(_round(q))
+    offsets = list(entry.offsets)
+    k = st.units_factor
+    if l_word == 1:
+        values = {i: v for i, v in axes}
+    else:
+        values = _measured(it, dict(axes), l_word)
+    for i, v in values.items():
+        offsets[i] = v / k if LINEAR[i] else v
+    diameter = 2.0 * w["r"] / k if "r" in w else entry.diameter
+    entry = entry._replace(offsets=tuple(offsets), diameter=diameter,
+                           frontangle=w.get("i", entry.frontangle),
+                           backangle=w.get("j", entry.backangle), orientation=orientation)
+    tools.slots[index] = entry
+    _emit_entry(it, index, entry)
+    if index == st.tool_index:
+        tools.slots[0] = entry
+        _emit_entry(it, 0, entry)
+
+
+def _emit_entry(it: Machine, index: int, e: ToolEntry) -> None:
+    x, y, z, a, b, c, u, v, w = e.offsets
+    it.emit(ops.SetToolTableEntry(index, e.number, x, y, z, a, b, c, u, v, w, e.frontangle,
+                                  e.backangle, e.orientation))
+
+
+def _measured(it: Machine, given: dict[int, float], l_word: int) -> dict[int, float]:
+    """L10 / L11: the offsets (program units) that make the current point read ``given``."""
+    st = it.state
+    machine = to_machine(st, st.pos)
+    if l_word == 10:
+        point = list(st.pos)
+        for i, v in given.items():
+            point[i] = v
+        base = to_machine(st, point, tlo=False)
+        return {i: machine[i] - base[i] for i in given}
+    origin_base = G54_ORIGIN + COORD_STRIDE * (_G59_3 - 1)
+    numbered = it.params.numbered
+    k = st.units_factor
+    origin: Vec = [numbered[origin_base + i] * (k if LINEAR[i] else 1.0) for i in range(AXES)]
+    return {i: machine[i] - origin[i] - v for i, v in given.items()}
+
+
+# -- G7 / G8 ------------------------------------------------------------------------------------
+def lathe_mode(it: Machine, code: int) -> None:
+    """G7 diameter mode (X words are halved), G8 radius mode; rs274 comments on a change."""
+    st = it.state
+    diameter = code == 70
+    if diameter != st.lathe_diameter:
+        word = "diameter" if diameter else "radius"
+        it.emit(ops.Comment(f"interpreter: Lathe diameter mode changed to {word}"))
+    st.lathe_diameter = diameter
