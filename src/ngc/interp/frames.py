@@ -4,6 +4,7 @@ and the tool length offset (coordinates.adoc).  Pure functions of the :class:`~n
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 from .state import AXES, State
 
@@ -21,10 +22,11 @@ def to_machine(st: State, prog: Vec, tlo: bool = True) -> Vec:
     return [p[i] + st.g5x[i] + t[i] for i in range(AXES)]
 
 
-def to_program(st: State, machine: Vec) -> Vec:
-    """Machine coordinates -> program coordinates.  rs274 takes the tool length offset off X Y Z
-    only (the rotary axes' offset counts the other way, in :func:`to_machine`, not here)."""
-    t = st.tlo
+def to_program(st: State, machine: Vec, tlo: Sequence[float] | None = None) -> Vec:
+    """Machine coordinates -> program coordinates (``tlo``: with that tool length offset instead
+    of the one in effect).  rs274 takes the tool length offset off X Y Z only (the rotary axes'
+    offset counts the other way, in :func:`to_machine`, not here)."""
+    t = st.tlo if tlo is None else tlo
     p = [machine[i] - st.g5x[i] - (t[i] if i < 3 else 0.0) for i in range(AXES)]
     # Rotated even by 0 degrees: rs274 does, which decides the sign of a zero (G53 X-0).
     p[0], p[1] = rotate(p[0], p[1], -st.rotation)

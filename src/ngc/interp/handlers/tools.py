@@ -19,7 +19,7 @@ from ...canon import ops
 from ...config.tooltable import ToolEntry
 from ...errors import NgcSemanticError
 from ...language.codes import AXIS_LETTERS
-from ..frames import Vec, to_machine
+from ..frames import Vec, rotate, to_machine, to_program
 from ..parameters import COORD_STRIDE, G54_ORIGIN
 from ..state import AXES, LINEAR
 
@@ -165,7 +165,10 @@ def _apply(it: Machine, new: list[float]) -> None:
         st.canon_pos = list(st.pos)
     old = st.tlo
     st.tlo = new
-    st.pos = [st.pos[i] + old[i] - new[i] for i in range(AXES)]
+    delta = [old[i] - new[i] for i in range(AXES)]  # machine axes
+    if st.rotation:
+        delta[0], delta[1] = rotate(delta[0], delta[1], -st.rotation)
+    st.pos = [st.pos[i] + delta[i] for i in range(AXES)]
     st.canon_anchor = st.pos
     it.emit(ops.UseToolLengthOffset(*new))
 
@@ -204,7 +207,7 @@ def g10_tools(it: Machine, r: Words, l_word: int) -> None:
     if l_word == 1:
         values = {i: v for i, v in axes}
     else:
-        values = _measured(it, dict(axes), l_word)
+        values = _measured(it, dict(axes), l_word, entry)
     for i, v in values.items():
         offsets[i] = v / k if LINEAR[i] else v
     diameter = 2.0 * w["r"] / k if "r" in w else entry.diameter
@@ -224,16 +227,24 @@ def _emit_entry(it: Machine, index: int, e: ToolEntry) -> None:
                                   e.backangle, e.orientation))
 
 
-def _measured(it: Machine, given: dict[int, float], l_word: int) -> dict[int, float]:
-    """L10 / L11: the offsets (program units) that make the current point read ``given``."""
+def _measured(
+    it: Machine, given: dict[int, float], l_word: int, entry: ToolEntry
+) -> dict[int, float]:
+    """L10 / L11: the offsets (program units) that make the current point read ``given``.
+
+    L10: an axis not given keeps the coordinate the current point would have with the tool's
+    entry as the offset (with a rotation, a given X or Y sets both)."""
     st = it.state
     machine = to_machine(st, st.pos)
     if l_word == 10:
-        point = list(st.pos)
+        point = to_program(st, machine, _to_program_units(st, entry.offsets))
         for i, v in given.items():
             point[i] = v
         base = to_machine(st, point, tlo=False)
-        return {i: machine[i] - base[i] for i in given}
+        changed = set(given)
+        if st.rotation and changed & {0, 1}:
+            changed |= {0, 1}  # a rotated X or Y moves the offset along both
+        return {i: machine[i] - base[i] for i in changed}
     origin_base = G54_ORIGIN + COORD_STRIDE * (_G59_3 - 1)
     numbered = it.params.numbered
     k = st.units_factor
