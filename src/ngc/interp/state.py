@@ -56,7 +56,6 @@ class State:
         "tool_changed",
         "tool_index",
         "tool_offset",
-        "tool_set",
         "tools",
         "value",
         "value_returned",
@@ -95,7 +94,6 @@ class State:
         self.canon_pos: list[float] | None = None
         self.canon_anchor: list[float] | None = None
         self.tool_changed = False  # M6 or M61 ran in the line being executed
-        self.tool_set = False  # M6 or M61 ran: G43 applies the slot ``tool_index``
         self.lathe_diameter = False  # G7
         self.feed = 0.0  # F
         self.speed = 0.0  # S

@@ -54,9 +54,8 @@ def _lookup(it: Machine, number: int) -> ToolEntry:
 
 
 def _current(st: State) -> ToolEntry:
-    """The tool G43 applies: the slot M6 or M61 last put in the spindle (M61 loads no entry);
-    before any, the spindle's empty entry."""
-    return st.tools.slots[st.tool_index] if st.tool_set else st.tools.spindle
+    """The tool G43 applies: the spindle's entry, which M6 loads (M61 loads none)."""
+    return st.tools.spindle
 
 
 # -- T, M6, M61 ---------------------------------------------------------------------------------
@@ -89,7 +88,7 @@ def change_tool(it: Machine) -> None:
     if index > 0:
         st.tools.slots[0] = st.tools.slots[index]
     st.tool_index = index
-    st.tool_set = st.tool_changed = True
+    st.tool_changed = True
 
 
 def set_tool_number(it: Machine, r: Words) -> None:
@@ -104,7 +103,7 @@ def set_tool_number(it: Machine, r: Words) -> None:
         raise _not_found(number)
     it.emit(ops.ChangeToolNumber(index))
     st.tool_index = index
-    st.tool_set = st.tool_changed = True
+    st.tool_changed = True
 
 
 def _round(value: float) -> float:
