@@ -243,19 +243,20 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     ea, eb = end[a], end[b]
     outward = (side > 0) == (rotation < 0)  # left of a clockwise arc, right of a counterclockwise
     sign = 1.0 if outward else -1.0
-    t1 = _atan2(eb - c2, ea - c1)
-    ra = ea + sign * r * _cos(t1)
-    rb = eb + sign * r * _sin(t1)
+    # A compensated point: the programmed one's radius scaled to the compensated circle (which
+    # decides the sign of a zero as rs274 prints it).
+    big = _hypot(ea - c1, eb - c2)
+    rr = big + sign * r
+    ra = c1 + (ea - c1) * (rr / big)
+    rb = c2 + (eb - c2) * (rr / big)
     if c.first:
         ca, cb = c.ca, c.cb
-        big = _hypot(ea - c1, eb - c2)
         if big <= r:
             raise NgcSemanticError(
                 "Radius of cutter compensation entry arc is not greater than the tool radius")
         # The center moves along the end's radius, to where it is as far from the current
         # point as from the compensated end.
-        ua, ub = _cos(t1), _sin(t1)
-        rr = big + sign * r
+        ua, ub = (ea - c1) / big, (eb - c2) / big
         k = (rr * rr - ((c1 - ca) ** 2 + (c2 - cb) ** 2)) / (2 * (rr - (ua * (ca - c1) + ub * (cb - c2))))
         k1, k2 = c1 + k * ua, c2 + k * ub
         c.first = False
@@ -270,10 +271,10 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     if not outward and big <= r:
         raise NgcSemanticError("Tool radius not less than arc radius with comp")
     t0 = _atan2(pb - c2, pa - c1)
-    sa = pa + sign * r * _cos(t0)
-    sb = pb + sign * r * _sin(t0)
-    tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
     kr = big + sign * r
+    sa = c1 + (pa - c1) * (kr / big)
+    sb = c2 + (pb - c2) * (kr / big)
+    tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
     _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, ops.ArcFeed)
     c.sa, c.sb = c.ca, c.cb
     c.ka, c.kb, c.kr, c.rot = c1, c2, kr, rotation
@@ -310,6 +311,8 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
     side = c.side
     if turn * side < 0:  # outside: an arc around the programmed corner
         _check_held(c)
+        if sa == c.ca and sb == c.cb:
+            return  # a tool of no radius turns on the spot
         flush(m)
         pos = m.state.pos
         h = c.h
