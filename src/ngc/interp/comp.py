@@ -243,12 +243,14 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     ea, eb = end[a], end[b]
     outward = (side > 0) == (rotation < 0)  # left of a clockwise arc, right of a counterclockwise
     sign = 1.0 if outward else -1.0
-    # A compensated point: the programmed one's radius scaled to the compensated circle (which
-    # decides the sign of a zero as rs274 prints it).
-    big = _hypot(ea - c1, eb - c2)
+    # A compensated point: the programmed one moved by the radius along its unit radius (which
+    # decides the sign of a zero as rs274 prints it).  The compensated circle's radius is the
+    # start's (the end's may differ a little).
+    big = _hypot(pa - c1, pb - c2)
     rr = big + sign * r
-    ra = c1 + (ea - c1) * (rr / big)
-    rb = c2 + (eb - c2) * (rr / big)
+    big_end = _hypot(ea - c1, eb - c2)
+    ra = ea + sign * r * ((ea - c1) / big_end)
+    rb = eb + sign * r * ((eb - c2) / big_end)
     if c.first:
         ca, cb = c.ca, c.cb
         if big <= r:
@@ -256,8 +258,9 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
                 "Radius of cutter compensation entry arc is not greater than the tool radius")
         # The center moves along the end's radius, to where it is as far from the current
         # point as from the compensated end.
-        ua, ub = (ea - c1) / big, (eb - c2) / big
-        k = (rr * rr - ((c1 - ca) ** 2 + (c2 - cb) ** 2)) / (2 * (rr - (ua * (ca - c1) + ub * (cb - c2))))
+        ua, ub = (ea - c1) / big_end, (eb - c2) / big_end
+        k = (rr * rr - ((c1 - ca) ** 2 + (c2 - cb) ** 2)) / (
+            2 * (rr - (ua * (ca - c1) + ub * (cb - c2))))
         k1, k2 = c1 + k * ua, c2 + k * ub
         c.first = False
         c.sa, c.sb = ca, cb
@@ -267,17 +270,16 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
         _out(c, m, end, ra, rb)
         c.prog = end
         return
-    big = _hypot(pa - c1, pb - c2)
     if not outward and big <= r:
         raise NgcSemanticError("Tool radius not less than arc radius with comp")
     t0 = _atan2(pb - c2, pa - c1)
-    kr = big + sign * r
-    sa = c1 + (pa - c1) * (kr / big)
-    sb = c2 + (pb - c2) * (kr / big)
+    kr = big_end + sign * r
+    sa = pa + sign * r * ((pa - c1) / big)
+    sb = pb + sign * r * ((pb - c2) / big)
     tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
     _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, ops.ArcFeed)
     c.sa, c.sb = c.ca, c.cb
-    c.ka, c.kb, c.kr, c.rot = c1, c2, kr, rotation
+    c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
     fields = _arc_fields(c, end, ra, rb, c1, c2, rotation)
     _hold(m, c, ARC, ops.ArcFeed, fields)
     _out(c, m, end, ra, rb)
@@ -305,14 +307,12 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
         turn -= TWO_PI
     while turn < -math.pi:  # a reversal keeps its sign
         turn += TWO_PI
-    if -SMALL <= turn <= SMALL:
+    if -SMALL <= turn <= SMALL or c.radius == 0.0:  # a tool of no radius turns on the spot
         _check_held(c)
         return
     side = c.side
     if turn * side < 0:  # outside: an arc around the programmed corner
         _check_held(c)
-        if sa == c.ca and sb == c.cb:
-            return  # a tool of no radius turns on the spot
         flush(m)
         pos = m.state.pos
         h = c.h
