@@ -221,7 +221,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     n = t + HALF_PI if side > 0 else t - HALF_PI
     dx, dy = r * _cos(n), r * _sin(n)
     sa, sb = pa + dx, pb + dy
-    _corner(m, c, t, sa, sb, LINE, 0.0, 0.0, 0.0, op_type)
+    _corner(m, c, t, sa, sb, LINE, 0.0, 0.0, 0.0, 0)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
     _hold(m, c, LINE, op_type, _out(c, m, end, ea + dx, eb + dy))
@@ -277,7 +277,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     sa = pa + sign * r * ((pa - c1) / big)
     sb = pb + sign * r * ((pb - c2) / big)
     tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
-    _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, ops.ArcFeed)
+    _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation)
     c.sa, c.sb = c.ca, c.cb
     c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
     fields = _arc_fields(c, end, ra, rb, c1, c2, rotation)
@@ -294,9 +294,10 @@ def _arc_fields(c: Compensation, end: list[float], ea: float, eb: float, k1: flo
 
 # -- corners --------------------------------------------------------------------------------------
 def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, kind: int,
-            k1: float, k2: float, kr: float, op_type: type) -> None:
+            k1: float, k2: float, kr: float, rot: int) -> None:
     """Join the held move to the next one, which starts (offset) at ``sa, sb`` with direction
-    ``tangent`` (a line, or an arc of center ``k1, k2`` and compensated radius ``kr``)."""
+    ``tangent`` (a line, or an arc of center ``k1, k2``, compensated radius ``kr`` and
+    direction ``rot``)."""
     if c.kind == ARC:
         end_angle = _atan2(c.cb - c.kb, c.ca - c.ka)
         before = end_angle + HALF_PI if c.rot > 0 else end_angle - HALF_PI
@@ -321,7 +322,9 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
         m.emit(_new(ops.ArcFeed, fields))
         c.ca, c.cb = sa, sb
         return
-    # inside: the held move ends where the two compensated paths cross
+    # inside: the held move ends where the two compensated paths cross (an arc's crossing is the
+    # first met going back along the held arc from its end, or on along the next arc from its
+    # start)
     if c.kind == LINE:
         ua, ub = _cos(before), _sin(before)
         if kind == LINE:
@@ -332,33 +335,32 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
         else:
             found = _line_circle(c.ca, c.cb, ua, ub, k1, k2, kr)
             if found is None:
-                raise NgcSemanticError(
-                    "Arc to straight motion makes a corner the compensated tool can't fit in "
-                    "without gouging")
-            s = found[0]  # the crossing before the held line's end
-            xa, xb = c.ca + s * ua, c.cb + s * ub
+                raise NgcSemanticError(_ARC_LINE_GOUGE)
+            xa, xb = _first_on_arc(k1, k2, sa, sb, rot, found)
     elif kind == LINE:
         va, vb = _cos(tangent), _sin(tangent)
         found = _line_circle(sa, sb, va, vb, c.ka, c.kb, c.kr)
         if found is None:
-            raise NgcSemanticError(
-                "Arc to straight motion makes a corner the compensated tool can't fit in "
-                "without gouging")
-        s = found[1]  # the crossing after the next line's start
-        xa, xb = sa + s * va, sb + s * vb
+            raise NgcSemanticError(_ARC_LINE_GOUGE)
+        xa, xb = _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, found)
     else:
-        crossing = _circle_circle(c.ka, c.kb, c.kr, k1, k2, kr, (c.ca + sa) / 2, (c.cb + sb) / 2)
+        crossing = _circle_circle(c.ka, c.kb, c.kr, k1, k2, kr)
         if crossing is None:
             raise NgcSemanticError(
                 "Arc to arc motion makes a corner the compensated tool can't fit in without gouging")
-        xa, xb = crossing
+        xa, xb = _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, crossing)
     _move_held_end(m, c, xa, xb)
     _check_held(c)
 
 
+_ARC_LINE_GOUGE = ("Arc to straight motion makes a corner the compensated tool can't fit in "
+                   "without gouging")
+Points = tuple[tuple[float, float], tuple[float, float]]
+
+
 def _line_circle(pa: float, pb: float, ua: float, ub: float, k1: float, k2: float,
-                 kr: float) -> tuple[float, float] | None:
-    """The parameters (smaller, larger) where the line ``p + s u`` meets the circle."""
+                 kr: float) -> Points | None:
+    """The two points where the line ``p + s u`` meets the circle."""
     da, db = pa - k1, pb - k2
     half_b = da * ua + db * ub
     cc = da * da + db * db - kr * kr
@@ -366,12 +368,13 @@ def _line_circle(pa: float, pb: float, ua: float, ub: float, k1: float, k2: floa
     if disc < 0:
         return None
     root = math.sqrt(disc)
-    return -half_b - root, -half_b + root
+    s1, s2 = -half_b - root, -half_b + root
+    return (pa + s1 * ua, pb + s1 * ub), (pa + s2 * ua, pb + s2 * ub)
 
 
-def _circle_circle(a1: float, b1: float, r1: float, a2: float, b2: float, r2: float,
-                   na: float, nb: float) -> tuple[float, float] | None:
-    """The crossing of two circles nearest to ``na, nb``."""
+def _circle_circle(a1: float, b1: float, r1: float, a2: float, b2: float,
+                   r2: float) -> Points | None:
+    """The two points where two circles meet."""
     da, db = a2 - a1, b2 - b1
     d = _hypot(da, db)
     if d == 0.0 or d > r1 + r2 or d < abs(r1 - r2):
@@ -379,11 +382,22 @@ def _circle_circle(a1: float, b1: float, r1: float, a2: float, b2: float, r2: fl
     x = (d * d + r1 * r1 - r2 * r2) / (2 * d)
     y = math.sqrt(max(r1 * r1 - x * x, 0.0))
     ma, mb = a1 + x * da / d, b1 + x * db / d
-    p = (ma - y * db / d, mb + y * da / d)
-    q = (ma + y * db / d, mb - y * da / d)
-    if _hypot(p[0] - na, p[1] - nb) <= _hypot(q[0] - na, q[1] - nb):
-        return p
-    return q
+    return (ma - y * db / d, mb + y * da / d), (ma + y * db / d, mb - y * da / d)
+
+
+def _first_on_arc(k1: float, k2: float, pa: float, pb: float, rot: int,
+                  points: Points) -> tuple[float, float]:
+    """Of two points on a circle, the first met going from ``p`` counterclockwise (``rot`` > 0)
+    or clockwise."""
+    start = _atan2(pb - k2, pa - k1)
+    best = points[0]
+    best_travel = TWO_PI + 1.0
+    for point in points:
+        travel = (_atan2(point[1] - k2, point[0] - k1) - start) * (1 if rot > 0 else -1)
+        travel %= TWO_PI
+        if travel < best_travel:
+            best, best_travel = point, travel
+    return best
 
 
 def _move_held_end(m: Machine, c: Compensation, xa: float, xb: float) -> None:
