@@ -312,7 +312,10 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
         _check_held(c)
         return
     side = c.side
-    if turn * side < 0:  # outside: an arc around the programmed corner
+    crossing = None
+    if turn * side > 0:
+        crossing = _crossing(c, before, tangent, sa, sb, kind, k1, k2, kr, rot)
+    if crossing is None:  # outside (or a line and an arc that never meet): an arc around the corner
         _check_held(c)
         flush(m)
         pos = m.state.pos
@@ -322,39 +325,35 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
         m.emit(_new(ops.ArcFeed, fields))
         c.ca, c.cb = sa, sb
         return
-    # inside: the held move ends where the two compensated paths cross (an arc's crossing is the
-    # first met going back along the held arc from its end, or on along the next arc from its
-    # start)
+    _move_held_end(m, c, *crossing)
+    _check_held(c)
+
+
+def _crossing(c: Compensation, before: float, tangent: float, sa: float, sb: float, kind: int,
+              k1: float, k2: float, kr: float, rot: int) -> tuple[float, float] | None:
+    """Inside: where the two compensated paths cross (an arc's crossing is the first met going
+    back along the held arc from its end, or on along the next arc from its start); None for a
+    line and an arc that never meet."""
     if c.kind == LINE:
         ua, ub = _cos(before), _sin(before)
         if kind == LINE:
             va, vb = _cos(tangent), _sin(tangent)
             den = ua * vb - ub * va
             s = ((sa - c.ca) * vb - (sb - c.cb) * va) / den
-            xa, xb = c.ca + s * ua, c.cb + s * ub
-        else:
-            found = _line_circle(c.ca, c.cb, ua, ub, k1, k2, kr)
-            if found is None:
-                raise NgcSemanticError(_ARC_LINE_GOUGE)
-            xa, xb = _first_on_arc(k1, k2, sa, sb, rot, found)
-    elif kind == LINE:
+            return c.ca + s * ua, c.cb + s * ub
+        found = _line_circle(c.ca, c.cb, ua, ub, k1, k2, kr)
+        return None if found is None else _first_on_arc(k1, k2, sa, sb, rot, found)
+    if kind == LINE:
         va, vb = _cos(tangent), _sin(tangent)
         found = _line_circle(sa, sb, va, vb, c.ka, c.kb, c.kr)
-        if found is None:
-            raise NgcSemanticError(_ARC_LINE_GOUGE)
-        xa, xb = _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, found)
-    else:
-        crossing = _circle_circle(c.ka, c.kb, c.kr, k1, k2, kr)
-        if crossing is None:
-            raise NgcSemanticError(
-                "Arc to arc motion makes a corner the compensated tool can't fit in without gouging")
-        xa, xb = _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, crossing)
-    _move_held_end(m, c, xa, xb)
-    _check_held(c)
+        return None if found is None else _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, found)
+    points = _circle_circle(c.ka, c.kb, c.kr, k1, k2, kr)
+    if points is None:
+        raise NgcSemanticError(
+            "Arc to arc motion makes a corner the compensated tool can't fit in without gouging")
+    return _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, points)
 
 
-_ARC_LINE_GOUGE = ("Arc to straight motion makes a corner the compensated tool can't fit in "
-                   "without gouging")
 Points = tuple[tuple[float, float], tuple[float, float]]
 
 
