@@ -221,7 +221,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     n = t + HALF_PI if side > 0 else t - HALF_PI
     dx, dy = r * _cos(n), r * _sin(n)
     sa, sb = pa + dx, pb + dy
-    _corner(m, c, t, sa, sb, LINE, 0.0, 0.0, 0.0, 0)
+    _corner(m, c, t, sa, sb, LINE, 0.0, 0.0, 0.0, 0, op_type is ops.StraightTraverse)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
     _hold(m, c, LINE, op_type, _out(c, m, end, ea + dx, eb + dy))
@@ -277,7 +277,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     sa = pa + sign * r * ((pa - c1) / big)
     sb = pb + sign * r * ((pb - c2) / big)
     tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
-    _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation)
+    _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation, False)
     c.sa, c.sb = c.ca, c.cb
     c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
     fields = _arc_fields(c, end, ra, rb, c1, c2, rotation)
@@ -294,10 +294,10 @@ def _arc_fields(c: Compensation, end: list[float], ea: float, eb: float, k1: flo
 
 # -- corners --------------------------------------------------------------------------------------
 def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, kind: int,
-            k1: float, k2: float, kr: float, rot: int) -> None:
+            k1: float, k2: float, kr: float, rot: int, traverse: bool) -> None:
     """Join the held move to the next one, which starts (offset) at ``sa, sb`` with direction
     ``tangent`` (a line, or an arc of center ``k1, k2``, compensated radius ``kr`` and
-    direction ``rot``)."""
+    direction ``rot``).  Before a traverse, the corner is a traverse too."""
     if c.kind == ARC:
         end_angle = _atan2(c.cb - c.kb, c.ca - c.ka)
         before = end_angle + HALF_PI if c.rot > 0 else end_angle - HALF_PI
@@ -319,10 +319,16 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
         _check_held(c)
         flush(m)
         pos = m.state.pos
-        h = c.h
-        fields = [sa + c.shift_a, sb + c.shift_b, c.prog[c.a] + c.shift_a, c.prog[c.b] + c.shift_b,
-                  -side, pos[h], pos[3], pos[4], pos[5]]
-        m.emit(_new(ops.ArcFeed, fields))
+        if traverse:
+            to = pos.copy()
+            to[c.a] = sa + c.shift_a
+            to[c.b] = sb + c.shift_b
+            m.emit(_new(ops.StraightTraverse, to))
+        else:
+            h = c.h
+            fields = [sa + c.shift_a, sb + c.shift_b, c.prog[c.a] + c.shift_a,
+                      c.prog[c.b] + c.shift_b, -side, pos[h], pos[3], pos[4], pos[5]]
+            m.emit(_new(ops.ArcFeed, fields))
         c.ca, c.cb = sa, sb
         return
     _move_held_end(m, c, *crossing)
