@@ -18,7 +18,7 @@ from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
 from .check import implied_motion
-from .handlers import coordinates, modes, motion, program, tools
+from .handlers import ccomp, coordinates, modes, motion, program, tools
 from .machine import Machine
 
 Handler = Callable[[Machine, Words, int], None]
@@ -37,13 +37,19 @@ def _spindle_speed(m: Machine, r: Words, code: int) -> None:
 
 
 def _traverse(m: Machine, r: Words, code: int) -> None:
+    machine = r.g.get(codes.G_NON_MODAL) == 530
+    if machine and m.comp is not None:
+        ccomp.machine_move(m)
     m.state.motion = code
-    motion.traverse(m, motion.end_point(m, r.w, r.g.get(codes.G_NON_MODAL) == 530))
+    motion.traverse(m, motion.end_point(m, r.w, machine))
 
 
 def _feed(m: Machine, r: Words, code: int) -> None:
+    machine = r.g.get(codes.G_NON_MODAL) == 530
+    if machine and m.comp is not None:
+        ccomp.machine_move(m)
     m.state.motion = code
-    motion.feed(m, r.w, motion.end_point(m, r.w, r.g.get(codes.G_NON_MODAL) == 530))
+    motion.feed(m, r.w, motion.end_point(m, r.w, machine))
 
 
 def _arc(m: Machine, r: Words, code: int) -> None:
@@ -66,7 +72,7 @@ def _subprogram(m: Machine, r: Words, code: int) -> None:
     raise AssertionError("M98/M99 are run by the control flow")
 
 
-HANDLERS: Mapping[str, Handler] = MappingProxyType({
+_HANDLERS: dict[str, Handler] = {
     "comment": _comment,
     "feed_rate": _feed_rate,
     "spindle_speed": _spindle_speed,
@@ -85,6 +91,7 @@ HANDLERS: Mapping[str, Handler] = MappingProxyType({
     "change_tool": lambda m, r, code: tools.change_tool(m),
     "set_tool_number": lambda m, r, code: tools.set_tool_number(m, r),
     "lathe_mode": lambda m, r, code: tools.lathe_mode(m, code),
+    "cutter_comp_dynamic": ccomp.dynamic,
     "select_system": lambda m, r, code: coordinates.select_system(m, code),
     "control_mode": lambda m, r, code: modes.control_mode(m, code, r),
     "distance_mode": lambda m, r, code: modes.distance_mode(m, code),
@@ -101,6 +108,22 @@ HANDLERS: Mapping[str, Handler] = MappingProxyType({
     "arc": _arc,
     "cancel_motion": _cancel_motion,
     "stop": lambda m, r, code: program.stop(m, code),
+}
+
+
+def _refusing(check: Handler, run: Handler) -> Handler:
+    """A handler that first refuses its code while cutter radius compensation is on."""
+    def handler(m: Machine, r: Words, code: int) -> None:
+        if m.comp is not None:
+            check(m, r, code)
+        run(m, r, code)
+
+    return handler
+
+
+HANDLERS: Mapping[str, Handler] = MappingProxyType({
+    name: _refusing(ccomp.REFUSED[name], fn) if name in ccomp.REFUSED else fn
+    for name, fn in _HANDLERS.items()
 })
 
 _by_step = itemgetter(0)

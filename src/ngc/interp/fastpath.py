@@ -157,7 +157,7 @@ class FastPath:
                 raise NgcSemanticError("Cannot use axis values without a g code that uses them")
         if "f" in w:
             f = w["f"]
-            if f >= 0.0 and st.feed_mode == 940:
+            if f >= 0.0 and st.feed_mode == 940 and not m.held:
                 st.feed = f
                 m.sink.emit(_new(ops.SetFeedRate, (f,)), m.label, m.line)
             else:
@@ -167,7 +167,8 @@ class FastPath:
         if code is None:
             return
         st.motion = code
-        pos = st.pos
+        compensation = m.comp
+        pos = st.pos if compensation is None else compensation.prog
         if st.absolute:
             end = [w.get("x", pos[0]), w.get("y", pos[1]), w.get("z", pos[2]),
                    w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
@@ -175,6 +176,12 @@ class FastPath:
             end = motion.relative_end(pos, w)
         if code in self._arcs:
             motion.arc(m, w, end, code)
+            return
+        if compensation is not None:
+            if code == 0:
+                motion.traverse(m, end)
+            else:
+                motion.feed(m, w, end)
             return
         if code == 0:
             m.sink.emit(_new(ops.StraightTraverse, end), m.label, m.line)

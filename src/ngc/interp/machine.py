@@ -8,21 +8,23 @@ it runs, so every operation a handler emits carries its block's N column and sou
 from __future__ import annotations
 
 import os
-from typing import TYPE_CHECKING, TextIO
+from typing import TYPE_CHECKING, Any, TextIO
 
+from .comp import HELD
 from .parameters import COORD_SYSTEM, Parameters
 from .state import State
 
 if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
     from ..config.tooltable import ToolEntry, Tools
+    from .comp import Compensation
 
 
 class Machine:
     """State, parameters, the sink, and the files a program opens (logs)."""
 
-    __slots__ = ("encoding", "ended", "label", "line", "log", "params", "probe_log", "sink",
-                 "state", "write_files")
+    __slots__ = ("comp", "encoding", "ended", "held", "label", "line", "log", "params", "probe_log",
+                 "sink", "state", "write_files")
 
     def __init__(self, sink: Sink, write_files: bool = True) -> None:
         self.sink = sink
@@ -42,6 +44,10 @@ class Machine:
         # How the program's text was decoded from its file's bytes (encoding, errors), so that a
         # file name in it names the file those bytes name; None: text given as str.
         self.encoding: tuple[str, str] | None = None
+        # Cutter radius compensation (interp/comp.py): None while off; the moves and calls it
+        # holds back until the next move decides where the held move ends.
+        self.comp: Compensation | None = None
+        self.held: list[Any] = []
 
     @property
     def tools(self) -> Tools:
@@ -64,7 +70,10 @@ class Machine:
             return text
 
     def emit(self, op: Op) -> None:
-        self.sink.emit(op, self.label, self.line)
+        if self.held and type(op) in HELD:
+            self.held.append(op)  # behind a move held by cutter radius compensation
+        else:
+            self.sink.emit(op, self.label, self.line)
 
     def close(self) -> None:
         """Release what the program opened (the log and probe log files)."""

@@ -55,7 +55,6 @@ class State:
         "tlo",
         "tool_changed",
         "tool_index",
-        "tool_offset",
         "tools",
         "value",
         "value_returned",
@@ -79,7 +78,6 @@ class State:
         self.naive_tolerance = 0.0  # G64 Q
         self.retract_r = True  # G99 True (R plane, as rs274 starts), G98 False
         self.ccomp = 400  # G40 400
-        self.tool_offset = False  # G43 on
         # Tools.  ``tools`` is the machine's tool data (slot 0: the spindle's entry).
         self.tools = Tools()
         self.tlo = [0.0] * 9  # tool length offset X Y Z A B C U V W in effect, program units

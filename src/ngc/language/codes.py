@@ -172,9 +172,9 @@ _G: dict[int, Code] = {
     # group 7: cutter radius compensation
     400: Code(G_CUTTER_COMP, STEP_CUTTER_COMP, "cutter_comp_off"),
     410: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "d"),
-    411: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "dl"),
+    411: Code(G_CUTTER_COMP, STEP_CUTTER_COMP, "cutter_comp_dynamic", "dl"),
     420: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "d"),
-    421: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "dl"),
+    421: Code(G_CUTTER_COMP, STEP_CUTTER_COMP, "cutter_comp_dynamic", "dl"),
     # group 8: tool length offset
     430: Code(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "tool_length", "h"),
     # G43.1 / G43.2 take the line's axis words (an explicit motion code on the line uses them

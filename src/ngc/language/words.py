@@ -13,7 +13,7 @@ import math
 from ..errors import NgcSemanticError, NgcSyntaxError
 from .codes import AXIS_LETTERS, FREE_LETTERS, G_CANCEL_MOTION, G_MOTION, POLAR_LETTERS, CodeTable
 
-INTEGER_LETTERS = frozenset("dhlt")
+INTEGER_LETTERS = frozenset("hlt")  # D is a real: a diameter for G41.1/G42.1, a speed for G96
 _AXES = frozenset(AXIS_LETTERS + POLAR_LETTERS)
 # Words that run the modal motion on a line with no motion code: axes, and arc centers (rs274 cuts
 # a full circle for a line of ``I0.5`` alone in G2).

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 from ...canon import ops
 from ...errors import NgcSemanticError
 from ..state import AXES, LINEAR, MM_PER_INCH
+from . import ccomp
 
 if TYPE_CHECKING:
     from ..machine import Machine
@@ -173,15 +174,8 @@ def _announce_distance(it: Machine, what: str, was_absolute: bool, absolute: boo
 
 
 def cutter_comp_off(it: Machine) -> None:
-    """G40 (compensation is never on yet: the tools issue brings G41/G42)."""
-    it.state.ccomp = 400
-    it.emit(ops.Comment("interpreter: cutter radius compensation off"))
-
-
-def tool_length_off(it: Machine) -> None:
-    """G49: no tool length offset."""
-    it.state.tool_offset = False
-    it.emit(ops.UseToolLengthOffset(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))
+    """G40 (see handlers/ccomp.py)."""
+    ccomp.stop(it)
 
 
 def retract_mode(it: Machine, code: int) -> None:

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 from ...canon import ops
 from ...errors import NgcSemanticError
-from .. import frames
+from .. import comp, frames
 
 if TYPE_CHECKING:
     from ..machine import Machine
@@ -35,7 +35,7 @@ PLANES: dict[int, tuple[int, int, int, str, str, str, str]] = {
 def end_point(it: Machine, w: dict[str, float], machine: bool) -> list[float]:
     """The block's target in program coordinates (G53: axis words are machine coordinates)."""
     st = it.state
-    pos = st.pos
+    pos = st.pos if it.comp is None else it.comp.prog  # compensation: the programmed point
     if machine:
         current = frames.to_machine(st, pos)
         target = [w.get(a, current[i]) for i, a in enumerate("xyzabc")]
@@ -90,6 +90,9 @@ _new = tuple.__new__
 
 
 def traverse(it: Machine, end: list[float]) -> None:
+    if it.comp is not None:
+        comp.straight(it, ops.StraightTraverse, end)
+        return
     it.emit(ops.StraightTraverse(*end))
     it.state.pos = end
 
@@ -100,8 +103,12 @@ def feed(it: Machine, w: dict[str, float], end: list[float]) -> None:
     if st.feed_mode != 940 or st.feed == 0.0:
         _check_feed(it, w, "g1")
         if st.feed_mode == 930:
-            st.feed = _inverse_rate(w["f"], _line_length(st.pos, end))  # #<_feed> reads it
+            start = st.pos if it.comp is None else it.comp.prog  # the programmed move's length
+            st.feed = _inverse_rate(w["f"], _line_length(start, end))  # #<_feed> reads it
             it.emit(ops.SetFeedRate(st.feed))
+    if it.comp is not None:
+        comp.straight(it, ops.StraightFeed, end)
+        return
     it.sink.emit(_new(ops.StraightFeed, end), it.label, it.line)
     st.pos = end
 
@@ -143,6 +150,10 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
     if plane is None:
         raise NgcSemanticError("Cannot do an arc in planes G17.1, G18.1, or G19.1")
     first, second, helix, letters, forbidden, pname, labels = plane
+    compensation = it.comp
+    if compensation is not None and compensation.side == 0:
+        raise NgcSemanticError(
+            "The move just after exiting cutter compensation mode must be straight, not an arc")
     if "r" not in w and "i" not in w and "j" not in w and "k" not in w:
         raise NgcSemanticError("R i j k words all missing for arc")
     if st.feed_mode == 930 and "f" not in w:
@@ -153,7 +164,7 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
         raise NgcSemanticError("Mixed radius ijk format for arc")
     _check_arc_feed(it, w)
     turns = int(w.get("p", 1.0))  # a whole number of turns, at least 1 (checked before the line ran)
-    start = st.pos
+    start = st.pos if compensation is None else compensation.prog
     s1, s2 = start[first], start[second]
     e1, e2 = end[first], end[second]
     if "r" in w:
@@ -169,6 +180,9 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
         length = _arc_length(s1, s2, e1, e2, c1, c2, rotation, end[helix] - start[helix])
         st.feed = _inverse_rate(w["f"], length)
         it.emit(ops.SetFeedRate(st.feed))
+    if compensation is not None:
+        comp.arc(it, end, c1, c2, rotation)
+        return
     it.sink.emit(_new(ops.ArcFeed, (e1, e2, c1, c2, rotation, end[helix], end[3], end[4], end[5])),
                  it.label, it.line)
     st.pos = end

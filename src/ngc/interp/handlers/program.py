@@ -14,7 +14,7 @@ from ...config.varfile import c_float
 from ...errors import NgcProgramError
 from .. import frames
 from ..parameters import DEBUG_ENABLE
-from . import coordinates, logfile
+from . import ccomp, coordinates, logfile
 
 if TYPE_CHECKING:
     from ..machine import Machine
@@ -156,6 +156,7 @@ def stop(it: Machine, code: int) -> None:
 
 def program_end(it: Machine, code: int) -> None:
     """M2 / M30: G54 origin, XY plane, G90, G94, feed 0, spindle and coolant off, G1."""
+    ccomp.end(it)
     st = it.state
     machine = frames.to_machine(st, st.pos)
     coordinates.load_system(it, 1)

@@ -54,8 +54,10 @@ def _lookup(it: Machine, number: int) -> ToolEntry:
 
 
 def _current(st: State) -> ToolEntry:
-    """The tool G43 applies: the spindle's entry, which M6 loads (M61 loads none)."""
-    return st.tools.spindle
+    """The tool G43 applies: the spindle's entry, which M6 loads.  M61 loads none: only G43 on
+    its own line applies the slot M61 named (at the end of the line rs274 takes the tool data
+    back from the canon, whose spindle M61 did not change)."""
+    return st.tools.slots[st.tool_index] if st.tool_changed else st.tools.spindle
 
 
 # -- T, M6, M61 ---------------------------------------------------------------------------------

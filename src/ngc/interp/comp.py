@@ -1,0 +1,432 @@
+"""Cutter radius compensation: the geometry and the held moves (tool-compensation.adoc,
+g-code.adoc G40-G42.1), as rs274 shows them.
+
+While compensation is on, the tool runs beside the programmed path, one radius away, to its left
+(G41) or right (G42) in the XY (G17) or XZ (G18) plane.  The end of a move depends on the next
+move, so each move in the plane is *held* until the next one arrives: it is the first item of
+``Machine.held``; the moves out of the plane (Z only in XY) and the canon calls that follow it
+(comments, feed, spindle, coolant, dwell, stops: :data:`HELD`) queue behind it, and all are
+emitted, under the label of the block that releases them, when the next move in the plane
+decides the corner, at G40, or at M2/M30.
+
+Corners, as rs274 turns them (angles in radians, measured between the tangents):
+
+* within :data:`SMALL` of straight: the next move starts where the held one ends;
+* outside (away from the compensation side): an arc of the tool radius around the programmed
+  corner joins the two;
+* inside: the held move's end becomes the intersection of the two offset paths; a held straight
+  move that then runs backwards cannot be cut without gouging.
+
+The first move after G41/G42 (the entry move) goes from the current point to the end offset
+perpendicular to that move (a line) or radially (an arc, whose center moves along the end's radius
+so that it still starts at the current point).  The move after G40 (the exit move) goes straight
+from the compensated point to the programmed end; an arc there is an error.
+
+Positions: ``State.pos`` is the compensated point (as #5420-#5428 show it); :attr:`prog` holds the
+programmed one, from which the next block's end is computed.  Lathe tools (G41.1/G42.1 L1-L8 in
+XZ) shift the whole compensated path by the radius toward the tool's orientation.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any, Protocol
+
+from ..canon import ops
+from ..errors import NgcSemanticError
+
+if TYPE_CHECKING:
+    from ..canon.ops import Op, Sink
+    from .state import State
+
+
+class Machine(Protocol):
+    """What compensation uses of the :class:`~ngc.interp.machine.Machine` (which holds it)."""
+
+    comp: Compensation | None
+    held: list[Any]
+    state: State
+    sink: Sink
+    label: str
+    line: int
+
+    def emit(self, op: Op) -> None: ...
+
+SMALL = 0.05  # radians: a corner closer to straight than this is neither trimmed nor rounded
+HALF_PI = math.pi / 2
+TWO_PI = 2 * math.pi
+
+# The canon calls that wait behind a held move (everything else is emitted at once).
+HELD = frozenset({
+    ops.Comment, ops.SetFeedRate, ops.SetFeedMode, ops.SetSpindleSpeed, ops.StartSpindleClockwise,
+    ops.StartSpindleCounterclockwise, ops.StopSpindleTurning, ops.MistOn, ops.MistOff, ops.FloodOn,
+    ops.FloodOff, ops.Dwell, ops.ProgramStop, ops.OptionalProgramStop, ops.PalletShuttle,
+})
+
+# Lathe tool orientation (L word) -> the path's shift in (X, Z), in tool radii.
+ORIENTATION_SHIFT: dict[int, tuple[float, float]] = {
+    1: (-1.0, 1.0), 2: (-1.0, -1.0), 3: (1.0, -1.0), 4: (1.0, 1.0),
+    5: (0.0, 1.0), 6: (-1.0, 0.0), 7: (0.0, -1.0), 8: (1.0, 0.0),
+}
+
+# plane code -> (first axis, second axis, helix axis)
+PLANE_AXES = {170: (0, 1, 2), 180: (2, 0, 1)}
+
+LINE = 1
+ARC = 2
+
+_new = tuple.__new__
+_atan2 = math.atan2
+_cos = math.cos
+_sin = math.sin
+_hypot = math.hypot
+
+
+class Compensation:
+    """Compensation on (``side`` 1 left, -1 right) or just turned off (``side`` 0: the exit move
+    is next)."""
+
+    __slots__ = (
+        "a",
+        "b",
+        "ca",
+        "cb",
+        "first",
+        "h",
+        "item",
+        "ka",
+        "kb",
+        "kind",
+        "kr",
+        "pa",
+        "pb",
+        "pdir",
+        "prog",
+        "ptype",
+        "radius",
+        "rot",
+        "sa",
+        "sb",
+        "shift_a",
+        "shift_b",
+        "side",
+    )
+
+    def __init__(self, side: int, radius: float, plane: int, pos: list[float],
+                 orientation: int = 0) -> None:
+        self.side = side
+        self.radius = radius
+        self.a, self.b, self.h = PLANE_AXES.get(plane, (0, 1, 2))
+        self.prog = list(pos)  # the programmed point
+        self.first = True  # the entry move is next
+        shift = ORIENTATION_SHIFT.get(orientation) if plane == 180 else None
+        # (first, second) = (Z, X) in XZ
+        self.shift_a = 0.0 if shift is None else shift[1] * radius
+        self.shift_b = 0.0 if shift is None else shift[0] * radius
+        # the compensated point in the plane, before the orientation's shift
+        self.ca = pos[self.a]
+        self.cb = pos[self.b]
+        # the held move: kind, its item in Machine.held, its canon type, its start, its
+        # programmed direction at the end (a line) or its circle (an arc), the programmed corner
+        self.kind = 0
+        self.item: list[Any] = []
+        self.ptype: type = ops.StraightFeed
+        self.sa = self.sb = 0.0
+        self.pdir = 0.0
+        self.ka = self.kb = self.kr = 0.0
+        self.rot = 0
+        self.pa = self.pb = 0.0
+
+    @classmethod
+    def exit(cls, plane: int, pos: list[float]) -> Compensation:
+        return cls(0, 0.0, plane, pos)
+
+
+# -- the queue ------------------------------------------------------------------------------------
+def flush(m: Machine) -> None:
+    """Emit everything held, under the running block's label."""
+    held = m.held
+    if not held:
+        return
+    emit = m.sink.emit
+    label, line = m.label, m.line
+    for op in held:
+        if type(op) is list:
+            emit(_new(op[0], op[1]), label, line)
+        else:
+            emit(op, label, line)
+    held.clear()
+
+
+def _hold(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[float]) -> None:
+    flush(m)
+    item = [op_type, fields]
+    m.held.append(item)
+    c.item = item
+    c.kind = kind
+    c.ptype = op_type
+
+
+def _out(c: Compensation, m: Machine, end: list[float], na: float, nb: float) -> list[float]:
+    """The compensated end: the programmed end with its plane point replaced."""
+    out = end.copy()
+    out[c.a] = na + c.shift_a
+    out[c.b] = nb + c.shift_b
+    c.ca = na
+    c.cb = nb
+    m.state.pos = out
+    return out
+
+
+# -- straight moves -------------------------------------------------------------------------------
+def straight(m: Machine, op_type: type, end: list[float]) -> None:
+    """A G0 or G1 to the programmed ``end`` while compensation is on (or just turned off)."""
+    c: Compensation = m.comp  # type: ignore[assignment]
+    prog = c.prog
+    a, b = c.a, c.b
+    ea, eb = end[a], end[b]
+    side = c.side
+    if side == 0:  # the exit move
+        flush(m)
+        m.comp = None
+        m.emit(_new(op_type, end))
+        m.state.pos = end
+        return
+    r = c.radius
+    if c.first:
+        ca, cb = c.ca, c.cb
+        if _hypot(ea - ca, eb - cb) <= r:
+            raise NgcSemanticError(
+                "Length of cutter compensation entry move is not greater than the tool radius")
+        t = _atan2(eb - cb, ea - ca)
+        n = t + HALF_PI if side > 0 else t - HALF_PI
+        na, nb = ea + r * _cos(n), eb + r * _sin(n)
+        c.first = False
+        c.sa, c.sb = ca, cb
+        c.pdir = t
+        _hold(m, c, LINE, op_type, _out(c, m, end, na, nb))
+        c.prog = end
+        return
+    pa, pb = prog[a], prog[b]
+    if ea == pa and eb == pb:
+        # Out of the plane: queued behind the held move, at its end.
+        out = end.copy()
+        out[a] = c.ca + c.shift_a
+        out[b] = c.cb + c.shift_b
+        m.held.append([op_type, out])
+        m.state.pos = out
+        c.prog = end
+        return
+    t = _atan2(eb - pb, ea - pa)
+    n = t + HALF_PI if side > 0 else t - HALF_PI
+    dx, dy = r * _cos(n), r * _sin(n)
+    sa, sb = pa + dx, pb + dy
+    _corner(m, c, t, sa, sb, LINE, 0.0, 0.0, 0.0, 0, op_type is ops.StraightTraverse)
+    c.sa, c.sb = c.ca, c.cb
+    c.pdir = t
+    _hold(m, c, LINE, op_type, _out(c, m, end, ea + dx, eb + dy))
+    c.prog = end
+
+
+# -- arcs -----------------------------------------------------------------------------------------
+def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> None:
+    """A G2/G3 (center ``c1, c2`` in the plane) while compensation is on (or just turned off)."""
+    c: Compensation = m.comp  # type: ignore[assignment]
+    side = c.side
+    if side == 0:
+        raise NgcSemanticError(
+            "The move just after exiting cutter compensation mode must be straight, not an arc")
+    prog = c.prog
+    a, b = c.a, c.b
+    r = c.radius
+    pa, pb = prog[a], prog[b]
+    ea, eb = end[a], end[b]
+    outward = (side > 0) == (rotation < 0)  # left of a clockwise arc, right of a counterclockwise
+    sign = 1.0 if outward else -1.0
+    # A compensated point: the programmed one moved by the radius along its unit radius (which
+    # decides the sign of a zero as rs274 prints it).  The compensated circle's radius is the
+    # start's (the end's may differ a little).
+    big = _hypot(pa - c1, pb - c2)
+    rr = big + sign * r
+    big_end = _hypot(ea - c1, eb - c2)
+    ra = ea + sign * r * ((ea - c1) / big_end)
+    rb = eb + sign * r * ((eb - c2) / big_end)
+    if c.first:
+        ca, cb = c.ca, c.cb
+        if big <= r:
+            raise NgcSemanticError(
+                "Radius of cutter compensation entry arc is not greater than the tool radius")
+        # The center moves along the end's radius, to where it is as far from the current
+        # point as from the compensated end.
+        ua, ub = (ea - c1) / big_end, (eb - c2) / big_end
+        k = (rr * rr - ((c1 - ca) ** 2 + (c2 - cb) ** 2)) / (
+            2 * (rr - (ua * (ca - c1) + ub * (cb - c2))))
+        k1, k2 = c1 + k * ua, c2 + k * ub
+        c.first = False
+        c.sa, c.sb = ca, cb
+        c.ka, c.kb, c.kr, c.rot = k1, k2, abs(rr - k), rotation
+        fields = _arc_fields(c, end, ra, rb, k1, k2, rotation)
+        _hold(m, c, ARC, ops.ArcFeed, fields)
+        _out(c, m, end, ra, rb)
+        c.prog = end
+        return
+    if not outward and big <= r:
+        raise NgcSemanticError("Tool radius not less than arc radius with comp")
+    t0 = _atan2(pb - c2, pa - c1)
+    kr = big_end + sign * r
+    sa = pa + sign * r * ((pa - c1) / big)
+    sb = pb + sign * r * ((pb - c2) / big)
+    tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
+    _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation, False)
+    c.sa, c.sb = c.ca, c.cb
+    c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
+    fields = _arc_fields(c, end, ra, rb, c1, c2, rotation)
+    _hold(m, c, ARC, ops.ArcFeed, fields)
+    _out(c, m, end, ra, rb)
+    c.prog = end
+
+
+def _arc_fields(c: Compensation, end: list[float], ea: float, eb: float, k1: float, k2: float,
+                rotation: int) -> list[Any]:
+    sa, sb = c.shift_a, c.shift_b
+    return [ea + sa, eb + sb, k1 + sa, k2 + sb, rotation, end[c.h], end[3], end[4], end[5]]
+
+
+# -- corners --------------------------------------------------------------------------------------
+def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, kind: int,
+            k1: float, k2: float, kr: float, rot: int, traverse: bool) -> None:
+    """Join the held move to the next one, which starts (offset) at ``sa, sb`` with direction
+    ``tangent`` (a line, or an arc of center ``k1, k2``, compensated radius ``kr`` and
+    direction ``rot``).  Before a traverse, the corner is a traverse too."""
+    if c.kind == ARC:
+        end_angle = _atan2(c.cb - c.kb, c.ca - c.ka)
+        before = end_angle + HALF_PI if c.rot > 0 else end_angle - HALF_PI
+    else:
+        before = c.pdir
+    turn = tangent - before
+    while turn > math.pi:
+        turn -= TWO_PI
+    while turn < -math.pi:  # a reversal keeps its sign
+        turn += TWO_PI
+    if -SMALL <= turn <= SMALL or c.radius == 0.0:  # a tool of no radius turns on the spot
+        _check_held(c)
+        return
+    side = c.side
+    crossing = None
+    if turn * side > 0:
+        crossing = _crossing(c, before, tangent, sa, sb, kind, k1, k2, kr, rot)
+    if crossing is None:  # outside (or a line and an arc that never meet): an arc around the corner
+        _check_held(c)
+        flush(m)
+        pos = m.state.pos
+        if traverse:
+            to = pos.copy()
+            to[c.a] = sa + c.shift_a
+            to[c.b] = sb + c.shift_b
+            m.emit(_new(ops.StraightTraverse, to))
+        else:
+            h = c.h
+            fields = [sa + c.shift_a, sb + c.shift_b, c.prog[c.a] + c.shift_a,
+                      c.prog[c.b] + c.shift_b, -side, pos[h], pos[3], pos[4], pos[5]]
+            m.emit(_new(ops.ArcFeed, fields))
+        c.ca, c.cb = sa, sb
+        return
+    _move_held_end(m, c, *crossing)
+    _check_held(c)
+
+
+def _crossing(c: Compensation, before: float, tangent: float, sa: float, sb: float, kind: int,
+              k1: float, k2: float, kr: float, rot: int) -> tuple[float, float] | None:
+    """Inside: where the two compensated paths cross (an arc's crossing is the first met going
+    back along the held arc from its end, or on along the next arc from its start); None for a
+    line and an arc that never meet."""
+    if c.kind == LINE:
+        ua, ub = _cos(before), _sin(before)
+        if kind == LINE:
+            va, vb = _cos(tangent), _sin(tangent)
+            den = ua * vb - ub * va
+            s = ((sa - c.ca) * vb - (sb - c.cb) * va) / den
+            return c.ca + s * ua, c.cb + s * ub
+        found = _line_circle(c.ca, c.cb, ua, ub, k1, k2, kr)
+        return None if found is None else _first_on_arc(k1, k2, sa, sb, rot, found)
+    if kind == LINE:
+        va, vb = _cos(tangent), _sin(tangent)
+        found = _line_circle(sa, sb, va, vb, c.ka, c.kb, c.kr)
+        return None if found is None else _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, found)
+    points = _circle_circle(c.ka, c.kb, c.kr, k1, k2, kr)
+    if points is None:
+        raise NgcSemanticError(
+            "Arc to arc motion makes a corner the compensated tool can't fit in without gouging")
+    return _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, points)
+
+
+Points = tuple[tuple[float, float], tuple[float, float]]
+
+
+def _line_circle(pa: float, pb: float, ua: float, ub: float, k1: float, k2: float,
+                 kr: float) -> Points | None:
+    """The two points where the line ``p + s u`` meets the circle."""
+    da, db = pa - k1, pb - k2
+    half_b = da * ua + db * ub
+    cc = da * da + db * db - kr * kr
+    disc = half_b * half_b - cc
+    if disc < 0:
+        return None
+    root = math.sqrt(disc)
+    s1, s2 = -half_b - root, -half_b + root
+    return (pa + s1 * ua, pb + s1 * ub), (pa + s2 * ua, pb + s2 * ub)
+
+
+def _circle_circle(a1: float, b1: float, r1: float, a2: float, b2: float,
+                   r2: float) -> Points | None:
+    """The two points where two circles meet."""
+    da, db = a2 - a1, b2 - b1
+    d = _hypot(da, db)
+    if d == 0.0 or d > r1 + r2 or d < abs(r1 - r2):
+        return None
+    x = (d * d + r1 * r1 - r2 * r2) / (2 * d)
+    y = math.sqrt(max(r1 * r1 - x * x, 0.0))
+    ma, mb = a1 + x * da / d, b1 + x * db / d
+    return (ma - y * db / d, mb + y * da / d), (ma + y * db / d, mb - y * da / d)
+
+
+def _first_on_arc(k1: float, k2: float, pa: float, pb: float, rot: int,
+                  points: Points) -> tuple[float, float]:
+    """Of two points on a circle, the first met going from ``p`` counterclockwise (``rot`` > 0)
+    or clockwise."""
+    start = _atan2(pb - k2, pa - k1)
+    best = points[0]
+    best_travel = TWO_PI + 1.0
+    for point in points:
+        travel = (_atan2(point[1] - k2, point[0] - k1) - start) * (1 if rot > 0 else -1)
+        travel %= TWO_PI
+        if travel < best_travel:
+            best, best_travel = point, travel
+    return best
+
+
+def _move_held_end(m: Machine, c: Compensation, xa: float, xb: float) -> None:
+    """The held move (and the moves out of the plane queued behind it) now end at ``xa, xb``."""
+    oa, ob = xa + c.shift_a, xb + c.shift_b
+    item = c.item
+    if c.kind == ARC:
+        item[1][0] = oa
+        item[1][1] = ob
+    else:
+        item[1][c.a] = oa
+        item[1][c.b] = ob
+    for op in m.held:
+        if type(op) is list and op is not item:
+            op[1][c.a] = oa
+            op[1][c.b] = ob
+    c.ca, c.cb = xa, xb
+
+
+def _check_held(c: Compensation) -> None:
+    """A held straight move that would now run backwards cannot be cut without gouging."""
+    if c.kind != LINE:
+        return
+    if (c.ca - c.sa) * _cos(c.pdir) + (c.cb - c.sb) * _sin(c.pdir) < 0:
+        what = "traverse" if c.ptype is ops.StraightTraverse else "feed"
+        raise NgcSemanticError(
+            f"Straight {what} in concave corner cannot be reached by the tool without gouging")
