@@ -12,7 +12,7 @@ from ngc.language.codes import LINUXCNC, g_name
 # A line using each code with the words it takes, after an S word and M8 that would run first if the block
 # were executed in part.
 LINES = {
-    "G41": "G41 D1", "G42": "G42 D1", "G96": "G96 D2000",
+    "G96": "G96 D2000",
     "G5": "G5 X1 Y1 I0.5 J0.5 P0.5 Q0.5", "G5.1": "G5.1 X1 Y1 I0.5 J0.5",
     "G5.2": "G5.2 X1 Y1 P1 L3", "G33": "G33 Z-1 K0.1", "G33.1": "G33.1 Z-1 K0.1",
     "G38.2": "G38.2 Z-1 F10", "G38.3": "G38.3 Z-1 F10", "G38.4": "G38.4 Z-1 F10",

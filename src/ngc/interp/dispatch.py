@@ -91,6 +91,7 @@ _HANDLERS: dict[str, Handler] = {
     "change_tool": lambda m, r, code: tools.change_tool(m),
     "set_tool_number": lambda m, r, code: tools.set_tool_number(m, r),
     "lathe_mode": lambda m, r, code: tools.lathe_mode(m, code),
+    "cutter_comp": ccomp.from_table,
     "cutter_comp_dynamic": ccomp.dynamic,
     "select_system": lambda m, r, code: coordinates.select_system(m, code),
     "control_mode": lambda m, r, code: modes.control_mode(m, code, r),

@@ -171,9 +171,9 @@ _G: dict[int, Code] = {
     210: Code(G_UNITS, STEP_UNITS, "units"),
     # group 7: cutter radius compensation
     400: Code(G_CUTTER_COMP, STEP_CUTTER_COMP, "cutter_comp_off"),
-    410: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "d"),
+    410: Code(G_CUTTER_COMP, STEP_CUTTER_COMP, "cutter_comp", "dl"),
     411: Code(G_CUTTER_COMP, STEP_CUTTER_COMP, "cutter_comp_dynamic", "dl"),
-    420: _no(G_CUTTER_COMP, STEP_CUTTER_COMP, "d"),
+    420: Code(G_CUTTER_COMP, STEP_CUTTER_COMP, "cutter_comp", "dl"),
     421: Code(G_CUTTER_COMP, STEP_CUTTER_COMP, "cutter_comp_dynamic", "dl"),
     # group 8: tool length offset
     430: Code(G_TOOL_LENGTH, STEP_TOOL_LENGTH, "tool_length", "h"),

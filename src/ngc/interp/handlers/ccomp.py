@@ -1,5 +1,6 @@
-"""Cutter radius compensation: G40, G41.1 / G42.1 (and the entry G41 / G42 will share), and the
-codes rs274 refuses while it is on (g-code.adoc G40-G42.1; the geometry is ``interp/comp.py``)."""
+"""Cutter radius compensation: G40, G41 / G42 (a tool of the table), G41.1 / G42.1 (a diameter
+given), and the codes rs274 refuses while it is on (g-code.adoc G40-G42.1; the geometry is
+``interp/comp.py``)."""
 
 from __future__ import annotations
 
@@ -40,6 +41,36 @@ def dynamic(it: Machine, r: Resolved, code: int) -> None:
     if "l" in w and plane != 180:
         raise NgcSemanticError(f"{name} with L word, but plane is not G18")
     start(it, 1 if code == 411 else -1, w["d"], int(w.get("l", 0.0)))
+
+
+def from_table(it: Machine, r: Resolved, code: int) -> None:
+    """G41 / G42 [D tool number]: the diameter and orientation of a tool of the table (D0 or no D:
+    the tool in the spindle)."""
+    name = "G41" if code == 410 else "G42"
+    st = it.state
+    if st.plane not in (170, 180):
+        raise NgcSemanticError("Cutter radius compensation allowed only in XY, XZ planes")
+    if is_on(it):
+        raise NgcSemanticError("Cannot turn cutter radius comp on when on")
+    d = r.w.get("d", 0.0)
+    number = _whole(d)
+    if number < 0 or abs(d - number) >= WHOLE_TOLERANCE:
+        raise NgcSemanticError(f"{name} requires D word to be a whole number")
+    entry = it.current_tool() if number == 0 else it.tools.find(number)
+    if entry is None:
+        raise NgcSemanticError(f"Requested tool {number} not found in the tool table")
+    if entry.orientation not in (0, 9) and st.plane != 180:
+        raise NgcSemanticError(f"{name} with lathe tool, but plane is not G18")
+    start(it, 1 if code == 410 else -1, entry.diameter * st.units_factor, entry.orientation)
+
+
+# How far from a whole number a G41 / G42 D word may be.
+WHOLE_TOLERANCE = 0.0001
+
+
+def _whole(value: float) -> int:
+    """The nearest whole number, halves away from zero."""
+    return int(value + 0.5) if value >= 0.0 else -int(-value + 0.5)
 
 
 def start(it: Machine, side: int, diameter: float, orientation: int) -> None:
