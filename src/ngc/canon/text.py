@@ -35,7 +35,8 @@ class TextSink:
             template = self._templates[type(op)]
         except KeyError:
             template = self._templates[type(op)] = "%5d %s" + TEMPLATES[type(op)] + "\n"
-        self._lines.append(template % (count, label, *op))
+        # (a tuple concatenation is cheaper than unpacking into a new tuple)
+        self._lines.append(template % ((count, label) + op))  # type: ignore[operator]  # noqa: RUF005
         if not count & self.BATCH_MASK:
             self.flush()
 
