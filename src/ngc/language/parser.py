@@ -36,7 +36,7 @@ _LETTER_SPLIT = re.compile(r"([a-z])")
 _N_WORD = re.compile(r"n(\d+)(?:\.\d*)?")
 _LINE_NUMBER = re.compile(r"(\d+)(?:\.\d*)?")
 # Letters the fast path takes: plain real-valued words (no M, no integer words, no N/O).
-_FAST_LETTERS = frozenset("abcefgijkpqrsxyz")
+_FAST_LETTERS = frozenset("abcdefgijkpqrsxyz")  # not H L T: integers, checked as read
 _NUMBER_TOKEN = re.compile(r"[-+]?[0-9.]*")
 _STRTOD = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)")
 _NAME_END = re.compile(r"[^a-z]")
