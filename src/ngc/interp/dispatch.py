@@ -148,6 +148,19 @@ class Dispatcher:
         lathe = r.g.get(codes.G_LATHE)
         if "x" in r.w and (m.state.lathe_diameter if lathe is None else lathe == 70):
             r = _diameter_x(r)
+        self.run(m, r, self.plan(m, r))
+
+    @staticmethod
+    def run(m: Machine, r: Words, plan: list[tuple[int, Handler, int]]) -> None:
+        """Run the steps of :meth:`plan` (then the position an M6 or M61 line leaves)."""
+        for _, fn, code in plan:
+            fn(m, r, code)
+        if m.state.tool_changed:
+            tools.canon_position(m.state)
+
+    def plan(self, m: Machine, r: Words) -> list[tuple[int, Handler, int]]:
+        """The steps a checked block runs, in the order of execution: (step, handler, code).
+        It depends on the machine's state only through the modal motion axis words run."""
         calls: list[tuple[int, Handler, int]] = []
         if r.comment is not None:
             calls.append((codes.STEP_COMMENT, _comment, 0))
@@ -171,10 +184,7 @@ class Dispatcher:
             if fn is not None:
                 calls.append((step, fn, modal))
         calls.sort(key=_by_step)
-        for _, fn, code in calls:
-            fn(m, r, code)
-        if m.state.tool_changed:
-            tools.canon_position(m.state)
+        return calls
 
 
 def _diameter_x(r: Words) -> Words:

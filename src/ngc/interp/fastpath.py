@@ -7,7 +7,10 @@ lines.  :class:`FastPath` runs them with the same checks and in the same order a
 (:class:`~ngc.interp.dispatch.Dispatcher`), without building a block:
 
 * :meth:`FastPath.line` reads a raw line with :func:`~ngc.language.parser.split_plain` (and keeps
-  the last plain lines read, as CAM output repeats its retracts) or runs a comment-only line;
+  the last plain lines read, as CAM output repeats its retracts) or runs a comment-only line; a
+  line of literal words that is not plain but moves nothing (``G40``, ``G41.1 D4``, ``G90``)
+  is checked and planned once, as its check and its steps do not depend on the machine's state,
+  and kept too;
 * :meth:`FastPath.convert` is the plain-line runner (the hot loop of a plain program);
 * :meth:`FastPath.compile` and :meth:`FastPath.specialise` give the lines of a loop body a runner
   built once (parameter settings only, or a plain motion with computed values).
@@ -23,7 +26,14 @@ from typing import NamedTuple
 
 from ..canon import ops
 from ..errors import NgcSemanticError
-from ..language.codes import FREE_LETTERS, G_CANCEL_MOTION, G_MOTION, CodeTable
+from ..language.codes import (
+    FREE_LETTERS,
+    G_CANCEL_MOTION,
+    G_MACHINE_COORDINATES,
+    G_MOTION,
+    G_NON_MODAL,
+    CodeTable,
+)
 from ..language.expressions import Expr, Value
 from ..language.lexer import C_SPACE
 from ..language.parser import (
@@ -36,6 +46,8 @@ from ..language.parser import (
     words_of,
 )
 from ..language.words import Words
+from .check import check
+from .dispatch import Dispatcher, Handler
 from .handlers import modes, motion, program
 from .machine import Machine
 from .parameters import INI_PREFIX, PREDEFINED, Parameters
@@ -60,13 +72,18 @@ class Compiled(NamedTuple):
 class FastPath:
     """The plain-line shortcuts for one machine and code table."""
 
-    __slots__ = ("_arcs", "_lines", "_motion", "execute", "m", "table")
+    __slots__ = ("_arcs", "_lines", "_motion", "_static", "dispatcher", "execute", "m", "table")
 
-    def __init__(self, m: Machine, table: CodeTable, execute: Callable[[Block], None]) -> None:
-        """``execute`` runs a block on the general path (a line read here that is not plain)."""
+    def __init__(self, m: Machine, table: CodeTable, execute: Callable[[Block], None],
+                 dispatcher: Dispatcher) -> None:
+        """``execute`` runs a block on the general path (a line read here that is not plain);
+        ``dispatcher`` plans the steps of the lines that move nothing."""
         self.m = m
         self.table = table
         self.execute = execute
+        self.dispatcher = dispatcher
+        # Raw line -> (words, N column, steps) of the lines of literal words that move nothing.
+        self._static: dict[str, tuple[Words, str, list[tuple[int, Handler, int]]]] = {}
         # G word value -> motion code, for the motion codes a plain line may hold.
         self._motion = {code / 10: code for code, row in table.g.items()
                         if row.group == G_MOTION and row.handler in PLAIN_HANDLERS}
@@ -109,6 +126,12 @@ class FastPath:
         m = self.m
         hit = self._lines.get(raw)
         if hit is None:
+            static = self._static.get(raw)
+            if static is not None:
+                r, m.label, plan = static
+                m.line = m.state.line = number
+                self.dispatcher.run(m, r, plan)
+                return True
             found = split_plain(raw.replace(" ", "").lower())
             if found is None:
                 return self.comment_line(raw, number)
@@ -120,8 +143,11 @@ class FastPath:
                 cache[raw] = hit
             else:
                 w, g, digits = found
+                r = words_of(w, g, self.table)
+                if not r.moves and r.g.get(G_NON_MODAL) != G_MACHINE_COORDINATES:
+                    return self._run_static(raw, number, r, n_label(digits))
                 block = Block(number, raw.rstrip(C_SPACE))
-                block.resolved = words_of(w, g, self.table)
+                block.resolved = r
                 if digits is not None:
                     block.n_number = int(digits)
                     block.label = n_label(digits)
@@ -130,6 +156,21 @@ class FastPath:
         w, code, m.label = hit
         m.line = m.state.line = number
         self.convert(w, code)
+        return True
+
+    def _run_static(self, raw: str, number: int, r: Words, label: str) -> bool:
+        """A line of literal words that moves nothing: checked (the check reads no state when
+        nothing moves), planned, kept, run."""
+        m = self.m
+        m.label = label
+        m.line = m.state.line = number
+        check(m.state, r, self.table)
+        plan = self.dispatcher.plan(m, r)
+        cache = self._static
+        if len(cache) >= PLAIN_CACHE_SIZE:
+            cache.clear()
+        cache[raw] = (r, label, plan)
+        self.dispatcher.run(m, r, plan)
         return True
 
     def comment_line(self, raw: str, number: int) -> bool:

@@ -70,7 +70,9 @@ class Interpreter:
         self.params: Parameters = m.params
         self.table = table
         self.dispatcher = Dispatcher(table)
-        self.fast: FastPath | None = FastPath(m, table, self.execute) if fast else None
+        self.fast: FastPath | None = (
+            FastPath(m, table, self.execute, self.dispatcher) if fast else None
+        )
         self.file: str | None = None
         self.percent = False
         self.finished = False  # the closing % was read
