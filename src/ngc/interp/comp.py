@@ -251,27 +251,30 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     big_end = _hypot(ea - c1, eb - c2)
     ra = ea + sign * r * ((ea - c1) / big_end)
     rb = eb + sign * r * ((eb - c2) / big_end)
+    if not outward and big <= r:
+        raise NgcSemanticError("Tool radius not less than arc radius with comp")
     if c.first:
         ca, cb = c.ca, c.cb
-        if big <= r:
-            raise NgcSemanticError(
-                "Radius of cutter compensation entry arc is not greater than the tool radius")
         # The center moves along the end's radius, to where it is as far from the current
         # point as from the compensated end.
         ua, ub = (ea - c1) / big_end, (eb - c2) / big_end
         k = (rr * rr - ((c1 - ca) ** 2 + (c2 - cb) ** 2)) / (
             2 * (rr - (ua * (ca - c1) + ub * (cb - c2))))
         k1, k2 = c1 + k * ua, c2 + k * ub
+        if _hypot(ca - k1, cb - k2) <= r:
+            raise NgcSemanticError(
+                "Radius of cutter compensation entry arc is not greater than the tool radius")
         c.first = False
         c.sa, c.sb = ca, cb
         c.ka, c.kb, c.kr, c.rot = k1, k2, abs(rr - k), rotation
+        # the corner after it turns from the programmed circle's direction (the moved center
+        # may have crossed the end)
+        c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
         fields = _arc_fields(c, end, ra, rb, k1, k2, rotation)
         _hold(m, c, ARC, ops.ArcFeed, fields)
         _out(c, m, end, ra, rb)
         c.prog = end
         return
-    if not outward and big <= r:
-        raise NgcSemanticError("Tool radius not less than arc radius with comp")
     t0 = _atan2(pb - c2, pa - c1)
     kr = big_end + sign * r
     sa = pa + sign * r * ((pa - c1) / big)
@@ -280,10 +283,17 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation, False)
     c.sa, c.sb = c.ca, c.cb
     c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
+    c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
     fields = _arc_fields(c, end, ra, rb, c1, c2, rotation)
     _hold(m, c, ARC, ops.ArcFeed, fields)
     _out(c, m, end, ra, rb)
     c.prog = end
+
+
+def _end_tangent(ra: float, rb: float, rotation: int) -> float:
+    """The direction of an arc at the end of its radius ``ra, rb``."""
+    end_angle = _atan2(rb, ra)
+    return end_angle + HALF_PI if rotation > 0 else end_angle - HALF_PI
 
 
 def _arc_fields(c: Compensation, end: list[float], ea: float, eb: float, k1: float, k2: float,
@@ -298,11 +308,7 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
     """Join the held move to the next one, which starts (offset) at ``sa, sb`` with direction
     ``tangent`` (a line, or an arc of center ``k1, k2``, compensated radius ``kr`` and
     direction ``rot``).  Before a traverse, the corner is a traverse too."""
-    if c.kind == ARC:
-        end_angle = _atan2(c.cb - c.kb, c.ca - c.ka)
-        before = end_angle + HALF_PI if c.rot > 0 else end_angle - HALF_PI
-    else:
-        before = c.pdir
+    before = c.pdir
     turn = tangent - before
     while turn > math.pi:
         turn -= TWO_PI
@@ -430,3 +436,29 @@ def _check_held(c: Compensation) -> None:
         what = "traverse" if c.ptype is ops.StraightTraverse else "feed"
         raise NgcSemanticError(
             f"Straight {what} in concave corner cannot be reached by the tool without gouging")
+
+
+# -- units ----------------------------------------------------------------------------------------
+def convert(m: Machine, k: float) -> None:
+    """The units changed (``k`` new units per old one): the held moves and every length kept
+    follow, as rs274 converts its whole queue."""
+    c: Compensation = m.comp  # type: ignore[assignment]
+    pos = m.state.pos  # converted already; a held line may share it
+    for op in m.held:
+        if type(op) is list and op[1] is not pos:
+            fields = op[1]
+            for i in (0, 1, 2, 3, 5) if op[0] is ops.ArcFeed else (0, 1, 2):
+                fields[i] *= k
+    c.prog = [v * k if i < 3 else v for i, v in enumerate(c.prog)]
+    c.radius *= k
+    c.shift_a *= k
+    c.shift_b *= k
+    c.ca *= k
+    c.cb *= k
+    c.sa *= k
+    c.sb *= k
+    c.ka *= k
+    c.kb *= k
+    c.kr *= k
+    c.pa *= k
+    c.pb *= k

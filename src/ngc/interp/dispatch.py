@@ -57,6 +57,13 @@ def _arc(m: Machine, r: Words, code: int) -> None:
     motion.arc(m, r.w, motion.end_point(m, r.w, False), code)
 
 
+def _units(m: Machine, r: Words, code: int) -> None:
+    metric = m.state.metric
+    modes.units(m, code)
+    if m.comp is not None and m.state.metric != metric:
+        ccomp.units_changed(m)
+
+
 def _cancel_motion(m: Machine, r: Words, code: int) -> None:
     m.state.motion = code
     m.emit(modes.MOTION_NONE)
@@ -83,7 +90,7 @@ _HANDLERS: dict[str, Handler] = {
     "subprogram": _subprogram,
     "dwell": lambda m, r, code: modes.dwell(m, r),
     "plane": lambda m, r, code: modes.plane(m, code),
-    "units": lambda m, r, code: modes.units(m, code),
+    "units": _units,
     "cutter_comp_off": lambda m, r, code: modes.cutter_comp_off(m),
     "tool_length_off": lambda m, r, code: tools.tool_length_off(m),
     "tool_length": tools.tool_length,
@@ -122,9 +129,25 @@ def _refusing(check: Handler, run: Handler) -> Handler:
     return handler
 
 
+def _ignored(run: Handler) -> Handler:
+    """A handler that does nothing while cutter radius compensation is on."""
+    def handler(m: Machine, r: Words, code: int) -> None:
+        if not ccomp.is_on(m):
+            run(m, r, code)
+
+    return handler
+
+
+def _wrapped(name: str, fn: Handler) -> Handler:
+    if name in ccomp.REFUSED:
+        return _refusing(ccomp.REFUSED[name], fn)
+    if name in ccomp.IGNORED:
+        return _ignored(fn)
+    return fn
+
+
 HANDLERS: Mapping[str, Handler] = MappingProxyType({
-    name: _refusing(ccomp.REFUSED[name], fn) if name in ccomp.REFUSED else fn
-    for name, fn in _HANDLERS.items()
+    name: _wrapped(name, fn) for name, fn in _HANDLERS.items()
 })
 
 _by_step = itemgetter(0)
