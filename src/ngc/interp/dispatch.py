@@ -129,6 +129,15 @@ def _refusing(check: Handler, run: Handler) -> Handler:
     return handler
 
 
+def _comp_refusal(message: str, code_name: str) -> Handler:
+    """A code not supported yet that rs274 refuses while compensation is on."""
+    def handler(m: Machine, r: Words, code: int) -> None:
+        ccomp.refuse(m, message)
+        raise NgcSemanticError(f"{code_name} is not supported yet")
+
+    return handler
+
+
 def _ignored(run: Handler) -> Handler:
     """A handler that does nothing while cutter radius compensation is on."""
     def handler(m: Machine, r: Words, code: int) -> None:
@@ -160,8 +169,10 @@ class Dispatcher:
 
     def __init__(self, table: CodeTable, handlers: Mapping[str, Handler] = HANDLERS) -> None:
         self.table = table
-        self.g = {code: (row.step, _bind(row.handler, handlers)) for code, row in table.g.items()}
-        self.m = {code: (row.step, _bind(row.handler, handlers)) for code, row in table.m.items()}
+        self.g = {code: (row.step, _bind(row, codes.g_name(code), handlers))
+                  for code, row in table.g.items()}
+        self.m = {code: (row.step, _bind(row, f"M{code}", handlers))
+                  for code, row in table.m.items()}
         # The words that run (F, S, T).
         self.words = {letter: (step, handlers[name])
                       for letter, (step, name) in codes.WORD_STEPS.items() if name is not None}
@@ -208,9 +219,13 @@ def _diameter_x(r: Words) -> Words:
     return half.finish()
 
 
-def _bind(name: str | None, handlers: Mapping[str, Handler]) -> Handler | None:
+def _bind(row: codes.Code, code_name: str, handlers: Mapping[str, Handler]) -> Handler | None:
     """The handler a row names; None for a code that is not run by itself (G53 modifies motion)
-    or not supported (the check refuses it before dispatch)."""
+    or not supported (the check refuses it before dispatch, unless compensation's refusal of it
+    comes first: then the handler raises that)."""
+    name = row.handler
+    if name is None and row.comp_refusal:
+        return _comp_refusal(row.comp_refusal, code_name)
     if not name:
         return None
     try:
