@@ -35,7 +35,6 @@ PENDING: dict[str, str] = {
     "ccomp-g42.1-square-ccw-outside": "cutter radius compensation: not matched yet",
     "ccomp-params-5422-in-debug-before-entry": "cutter radius compensation: not matched yet",
     "ccomp-rotation-offset-arc": "cutter radius compensation: not matched yet",
-    "ccomp-tt-err-m61-while-on": "cutter radius compensation: not matched yet",
 }
 
 

@@ -30,7 +30,7 @@ XZ) shift the whole compensated path by the radius toward the tool's orientation
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any, NoReturn, Protocol
 
 from ..canon import ops
 from ..errors import NgcSemanticError
@@ -110,6 +110,7 @@ class Compensation:
         "shift_a",
         "shift_b",
         "side",
+        "start",
     )
 
     def __init__(self, side: int, radius: float, plane: int, pos: list[float],
@@ -136,6 +137,7 @@ class Compensation:
         self.ka = self.kb = self.kr = 0.0
         self.rot = 0
         self.pa = self.pb = 0.0
+        self.start = pos  # the point the held move starts from (out of the plane)
 
     @classmethod
     def exit(cls, plane: int, pos: list[float]) -> Compensation:
@@ -204,6 +206,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         c.first = False
         c.sa, c.sb = ca, cb
         c.pdir = t
+        c.start = m.state.pos
         _hold(m, c, LINE, op_type, _out(c, m, end, na, nb))
         c.prog = end
         return
@@ -224,6 +227,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     _corner(m, c, t, sa, sb, LINE, 0.0, 0.0, 0.0, 0, op_type is ops.StraightTraverse)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
+    c.start = m.state.pos
     _hold(m, c, LINE, op_type, _out(c, m, end, ea + dx, eb + dy))
     c.prog = end
 
@@ -271,6 +275,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
         # may have crossed the end)
         c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
         fields = _arc_fields(c, end, ra, rb, k1, k2, rotation)
+        c.start = m.state.pos
         _hold(m, c, ARC, ops.ArcFeed, fields)
         _out(c, m, end, ra, rb)
         c.prog = end
@@ -285,6 +290,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
     c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
     fields = _arc_fields(c, end, ra, rb, c1, c2, rotation)
+    c.start = m.state.pos
     _hold(m, c, ARC, ops.ArcFeed, fields)
     _out(c, m, end, ra, rb)
     c.prog = end
@@ -320,7 +326,7 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
     side = c.side
     crossing = None
     if turn * side > 0:
-        crossing = _crossing(c, before, tangent, sa, sb, kind, k1, k2, kr, rot)
+        crossing = _crossing(c, before, tangent, turn, sa, sb, kind, k1, k2, kr, rot)
     if crossing is None:  # outside (or a line and an arc that never meet): an arc around the corner
         _check_held(c)
         flush(m)
@@ -341,14 +347,18 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
     _check_held(c)
 
 
-def _crossing(c: Compensation, before: float, tangent: float, sa: float, sb: float, kind: int,
-              k1: float, k2: float, kr: float, rot: int) -> tuple[float, float] | None:
+def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: float, sb: float,
+              kind: int, k1: float, k2: float, kr: float,
+              rot: int) -> tuple[float, float] | None:
     """Inside: where the two compensated paths cross (an arc's crossing is the first met going
     back along the held arc from its end, or on along the next arc from its start); None for a
     line and an arc that never meet."""
     if c.kind == LINE:
         ua, ub = _cos(before), _sin(before)
         if kind == LINE:
+            # the corner takes back r tan(turn / 2) of the held line, which must be that long
+            if c.radius * math.tan(abs(turn) / 2) > _hypot(c.ca - c.sa, c.cb - c.sb):
+                _gouge(c)
             va, vb = _cos(tangent), _sin(tangent)
             den = ua * vb - ub * va
             s = ((sa - c.ca) * vb - (sb - c.cb) * va) / den
@@ -433,9 +443,36 @@ def _check_held(c: Compensation) -> None:
     if c.kind != LINE:
         return
     if (c.ca - c.sa) * _cos(c.pdir) + (c.cb - c.sb) * _sin(c.pdir) < 0:
-        what = "traverse" if c.ptype is ops.StraightTraverse else "feed"
-        raise NgcSemanticError(
-            f"Straight {what} in concave corner cannot be reached by the tool without gouging")
+        _gouge(c)
+
+
+def _gouge(c: Compensation) -> NoReturn:
+    what = "traverse" if c.ptype is ops.StraightTraverse else "feed"
+    raise NgcSemanticError(
+        f"Straight {what} in concave corner cannot be reached by the tool without gouging")
+
+
+# -- tool changes -------------------------------------------------------------------------------
+def take_canon_point(m: Machine) -> None:
+    """After a line with M6 or M61 rs274 takes the canon's current point as its own: with a move
+    held, where the held move starts.  The held move now ends there; the corner after it turns
+    from the direction the programmed point's offset to that point gives."""
+    c: Compensation = m.comp  # type: ignore[assignment]
+    if c.kind == 0 or c.side == 0:
+        return
+    a, b = c.a, c.b
+    pos = c.start.copy()
+    pos[a] = c.sa + c.shift_a
+    pos[b] = c.sb + c.shift_b
+    m.state.pos = pos
+    prog = pos.copy()
+    prog[a] = c.prog[a]
+    prog[b] = c.prog[b]
+    c.prog = prog
+    _move_held_end(m, c, c.sa, c.sb)
+    if c.kind == LINE:
+        normal = _atan2(c.sb - prog[b], c.sa - prog[a])
+        c.pdir = normal - HALF_PI if c.side > 0 else normal + HALF_PI
 
 
 # -- units ----------------------------------------------------------------------------------------

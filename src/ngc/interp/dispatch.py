@@ -209,6 +209,8 @@ class Dispatcher:
             fn(m, r, code)
         if m.state.tool_changed:
             tools.canon_position(m.state)
+            if m.comp is not None:
+                ccomp.tool_changed(m)
 
 
 def _diameter_x(r: Words) -> Words:

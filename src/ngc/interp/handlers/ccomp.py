@@ -160,6 +160,11 @@ def units_changed(it: Machine) -> None:
     comp.convert(it, MM_PER_INCH if it.state.metric else 1.0 / MM_PER_INCH)
 
 
+def tool_changed(it: Machine) -> None:
+    """A line with M6 or M61 ran: the current point is the canon's."""
+    comp.take_canon_point(it)
+
+
 def machine_move(it: Machine) -> None:
     """G53."""
     refuse(it, "Cannot use g53 with cutter radius comp")
