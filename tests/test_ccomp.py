@@ -54,3 +54,48 @@ def test_the_fast_path_compensates_plain_lines(fast: bool) -> None:
     feeds = [tuple(round(v, 4) for v in op[:2]) for op, _, _ in sink.ops
              if isinstance(op, ops.StraightFeed)]
     assert feeds == [(10.0, 1.0), (19.0, 1.0), (19.0, 10.0), (30.0, 10.0)]
+
+
+_ON = "g21 g17 f300\ng0x0y-10\ng41.1 d4\ng1x0y0\nx20\n"
+
+
+def _error(text: str) -> str:
+    with pytest.raises(ngc.NgcError) as caught:
+        _run(text)
+    return caught.value.message
+
+
+@pytest.mark.parametrize(("line", "message"), [
+    ("m62 p0", "Cannot set motion output with cutter radius compensation on"),
+    ("m63 p0", "Cannot set motion digital output with cutter radius compensation on"),
+    ("m65 p0", "Cannot set auxiliary digital output with cutter radius compensation on"),
+    ("m66 p0 l0", "Cannot wait for digital input with cutter radius compensation on"),
+    ("m67 e0 q1", "Cannot set motion analog output with cutter radius compensation on"),
+    ("m68 e0 q1", "Cannot set auxiliary analog output with cutter radius compensation on"),
+    ("g33.1 z-1 k1", "Bug code not g0 or g1"),
+    ("g76 p1 z-1 i1 j1 k1", "Bug code not g0 or g1"),
+    ("g83 x1 z-1 r1 q1", "Cannot use canned cycles with cutter compensation on"),
+    ("g38.2", "All axes missing with motion code"),
+    # compensation turned off on the line: the code is not refused, only not supported yet
+    ("g40 g81 x30 z-1 r1", "G81 is not supported yet"),
+    ("g33 x30 k1", "G33 is not supported yet"),
+])
+def test_codes_refused_while_compensation_is_on(line: str, message: str) -> None:
+    assert _error(f"{_ON}{line}\nm2\n") == message
+
+
+def test_a_code_refused_on_the_line_that_turns_compensation_on() -> None:
+    assert _error("g0x0y0\ng41.1 d2 g81 x30 z-1 r1\nm2\n") == (
+        "Cannot use canned cycles with cutter compensation on")
+
+
+def test_offset_resets_leave_everything_while_compensation_is_on() -> None:
+    text = "g21 g92 x5\n" + _ON[4:] + "g92.2\ng40\n(debug,#5210)\ng0x0y0\nm2\n"
+    out = _run(text)
+    assert [op for op in out if isinstance(op, ops.SetG92Offset)][-1].x == -5.0
+    assert [op.text for op in out if isinstance(op, ops.Message)] == ["1.000000"]
+
+
+def test_units_change_converts_the_held_arc() -> None:
+    moves = _moves(_ON[:-4] + "g3 x20 y0 r10 z5\ng20\ng1 x1.5 y-.5\ng40\ng0 x0 y-1\nm2\n")
+    assert moves[2] == (0.7087, 0.0, 0.3937, 0.0, 1, 0.1969, 0.0, 0.0, 0.0)

@@ -31,18 +31,10 @@ KNOWN: dict[str, str] = {
 PENDING: dict[str, str] = {
     "ccomp-arc-arc-cusp": "cutter radius compensation: not matched yet",
     "ccomp-err-concave-line-arc": "cutter radius compensation: not matched yet",
-    "ccomp-err-entry-short-arc": "cutter radius compensation: not matched yet",
-    "ccomp-err-g38.2": "cutter radius compensation: not matched yet",
-    "ccomp-err-g5-spline": "cutter radius compensation: not matched yet",
-    "ccomp-err-g81": "cutter radius compensation: not matched yet",
-    "ccomp-err-read-5420": "cutter radius compensation: not matched yet",
-    "ccomp-g20-change-while-on": "cutter radius compensation: not matched yet",
     "ccomp-g42.1-entry-arc-g2": "cutter radius compensation: not matched yet",
     "ccomp-g42.1-square-ccw-outside": "cutter radius compensation: not matched yet",
-    "ccomp-g92.1-while-on": "cutter radius compensation: not matched yet",
     "ccomp-params-5422-in-debug-before-entry": "cutter radius compensation: not matched yet",
     "ccomp-rotation-offset-arc": "cutter radius compensation: not matched yet",
-    "ccomp-tt-err-m61-while-on": "cutter radius compensation: not matched yet",
 }
 
 

@@ -20,7 +20,7 @@ _ARCS = (20, 30)
 def check(st: State, r: Words, table: CodeTable) -> None:
     """Raise the first rule ``r`` breaks, in rs274's order."""
     g = r.g
-    _check_supported(r, table)
+    _check_supported(st, r, table)
     non_modal = g.get(codes.G_NON_MODAL)
     motion = g.get(codes.G_MOTION)
     if "t" in r.w and r.w["t"] < 0:
@@ -52,13 +52,18 @@ def implied_motion(st: State, r: Words, table: CodeTable) -> int | None:
     return st.motion
 
 
-def _check_supported(r: Words, table: CodeTable) -> None:
-    """A code (or word) ngc does not run yet is refused before anything else is said of it."""
+def _check_supported(st: State, r: Words, table: CodeTable) -> None:
+    """A code (or word) ngc does not run yet is refused before anything else is said of it,
+    unless cutter radius compensation is (or turns) on and rs274 refuses the code then: that
+    refusal comes at the code's step (dispatch)."""
+    comp = st.ccomp != 400 or r.g.get(codes.G_CUTTER_COMP, 400) != 400
     for code in r.g.values():
-        if table.g[code].handler is None:
+        row = table.g[code]
+        if row.handler is None and not (comp and row.comp_refusal):
             raise NgcSemanticError(f"{codes.g_name(code)} is not supported yet")
     for code in r.m.values():
-        if table.m[code].handler is None:
+        row = table.m[code]
+        if row.handler is None and not (comp and row.comp_refusal):
             raise NgcSemanticError(f"M{code} is not supported yet")
 
 

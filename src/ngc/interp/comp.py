@@ -30,7 +30,7 @@ XZ) shift the whole compensated path by the radius toward the tool's orientation
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any, NoReturn, Protocol
 
 from ..canon import ops
 from ..errors import NgcSemanticError
@@ -110,6 +110,7 @@ class Compensation:
         "shift_a",
         "shift_b",
         "side",
+        "start",
     )
 
     def __init__(self, side: int, radius: float, plane: int, pos: list[float],
@@ -136,6 +137,7 @@ class Compensation:
         self.ka = self.kb = self.kr = 0.0
         self.rot = 0
         self.pa = self.pb = 0.0
+        self.start = pos  # the point the held move starts from (out of the plane)
 
     @classmethod
     def exit(cls, plane: int, pos: list[float]) -> Compensation:
@@ -204,6 +206,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         c.first = False
         c.sa, c.sb = ca, cb
         c.pdir = t
+        c.start = m.state.pos
         _hold(m, c, LINE, op_type, _out(c, m, end, na, nb))
         c.prog = end
         return
@@ -224,6 +227,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     _corner(m, c, t, sa, sb, LINE, 0.0, 0.0, 0.0, 0, op_type is ops.StraightTraverse)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
+    c.start = m.state.pos
     _hold(m, c, LINE, op_type, _out(c, m, end, ea + dx, eb + dy))
     c.prog = end
 
@@ -251,27 +255,31 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     big_end = _hypot(ea - c1, eb - c2)
     ra = ea + sign * r * ((ea - c1) / big_end)
     rb = eb + sign * r * ((eb - c2) / big_end)
+    if not outward and big <= r:
+        raise NgcSemanticError("Tool radius not less than arc radius with comp")
     if c.first:
         ca, cb = c.ca, c.cb
-        if big <= r:
-            raise NgcSemanticError(
-                "Radius of cutter compensation entry arc is not greater than the tool radius")
         # The center moves along the end's radius, to where it is as far from the current
         # point as from the compensated end.
         ua, ub = (ea - c1) / big_end, (eb - c2) / big_end
         k = (rr * rr - ((c1 - ca) ** 2 + (c2 - cb) ** 2)) / (
             2 * (rr - (ua * (ca - c1) + ub * (cb - c2))))
         k1, k2 = c1 + k * ua, c2 + k * ub
+        if _hypot(ca - k1, cb - k2) <= r:
+            raise NgcSemanticError(
+                "Radius of cutter compensation entry arc is not greater than the tool radius")
         c.first = False
         c.sa, c.sb = ca, cb
         c.ka, c.kb, c.kr, c.rot = k1, k2, abs(rr - k), rotation
+        # the corner after it turns from the programmed circle's direction (the moved center
+        # may have crossed the end)
+        c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
         fields = _arc_fields(c, end, ra, rb, k1, k2, rotation)
+        c.start = m.state.pos
         _hold(m, c, ARC, ops.ArcFeed, fields)
         _out(c, m, end, ra, rb)
         c.prog = end
         return
-    if not outward and big <= r:
-        raise NgcSemanticError("Tool radius not less than arc radius with comp")
     t0 = _atan2(pb - c2, pa - c1)
     kr = big_end + sign * r
     sa = pa + sign * r * ((pa - c1) / big)
@@ -280,10 +288,18 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation, False)
     c.sa, c.sb = c.ca, c.cb
     c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
+    c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
     fields = _arc_fields(c, end, ra, rb, c1, c2, rotation)
+    c.start = m.state.pos
     _hold(m, c, ARC, ops.ArcFeed, fields)
     _out(c, m, end, ra, rb)
     c.prog = end
+
+
+def _end_tangent(ra: float, rb: float, rotation: int) -> float:
+    """The direction of an arc at the end of its radius ``ra, rb``."""
+    end_angle = _atan2(rb, ra)
+    return end_angle + HALF_PI if rotation > 0 else end_angle - HALF_PI
 
 
 def _arc_fields(c: Compensation, end: list[float], ea: float, eb: float, k1: float, k2: float,
@@ -298,11 +314,7 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
     """Join the held move to the next one, which starts (offset) at ``sa, sb`` with direction
     ``tangent`` (a line, or an arc of center ``k1, k2``, compensated radius ``kr`` and
     direction ``rot``).  Before a traverse, the corner is a traverse too."""
-    if c.kind == ARC:
-        end_angle = _atan2(c.cb - c.kb, c.ca - c.ka)
-        before = end_angle + HALF_PI if c.rot > 0 else end_angle - HALF_PI
-    else:
-        before = c.pdir
+    before = c.pdir
     turn = tangent - before
     while turn > math.pi:
         turn -= TWO_PI
@@ -314,7 +326,7 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
     side = c.side
     crossing = None
     if turn * side > 0:
-        crossing = _crossing(c, before, tangent, sa, sb, kind, k1, k2, kr, rot)
+        crossing = _crossing(c, before, tangent, turn, sa, sb, kind, k1, k2, kr, rot)
     if crossing is None:  # outside (or a line and an arc that never meet): an arc around the corner
         _check_held(c)
         flush(m)
@@ -335,14 +347,18 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
     _check_held(c)
 
 
-def _crossing(c: Compensation, before: float, tangent: float, sa: float, sb: float, kind: int,
-              k1: float, k2: float, kr: float, rot: int) -> tuple[float, float] | None:
+def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: float, sb: float,
+              kind: int, k1: float, k2: float, kr: float,
+              rot: int) -> tuple[float, float] | None:
     """Inside: where the two compensated paths cross (an arc's crossing is the first met going
     back along the held arc from its end, or on along the next arc from its start); None for a
     line and an arc that never meet."""
     if c.kind == LINE:
         ua, ub = _cos(before), _sin(before)
         if kind == LINE:
+            # the corner takes back r tan(turn / 2) of the held line, which must be that long
+            if c.radius * math.tan(abs(turn) / 2) > _hypot(c.ca - c.sa, c.cb - c.sb):
+                _gouge(c)
             va, vb = _cos(tangent), _sin(tangent)
             den = ua * vb - ub * va
             s = ((sa - c.ca) * vb - (sb - c.cb) * va) / den
@@ -427,6 +443,59 @@ def _check_held(c: Compensation) -> None:
     if c.kind != LINE:
         return
     if (c.ca - c.sa) * _cos(c.pdir) + (c.cb - c.sb) * _sin(c.pdir) < 0:
-        what = "traverse" if c.ptype is ops.StraightTraverse else "feed"
-        raise NgcSemanticError(
-            f"Straight {what} in concave corner cannot be reached by the tool without gouging")
+        _gouge(c)
+
+
+def _gouge(c: Compensation) -> NoReturn:
+    what = "traverse" if c.ptype is ops.StraightTraverse else "feed"
+    raise NgcSemanticError(
+        f"Straight {what} in concave corner cannot be reached by the tool without gouging")
+
+
+# -- tool changes -------------------------------------------------------------------------------
+def take_canon_point(m: Machine) -> None:
+    """After a line with M6 or M61 rs274 takes the canon's current point as its own: with a move
+    held, where the held move starts.  The held move now ends there; the corner after it turns
+    from the direction the programmed point's offset to that point gives."""
+    c: Compensation = m.comp  # type: ignore[assignment]
+    if c.kind == 0 or c.side == 0:
+        return
+    a, b = c.a, c.b
+    pos = c.start.copy()
+    pos[a] = c.sa + c.shift_a
+    pos[b] = c.sb + c.shift_b
+    m.state.pos = pos
+    prog = pos.copy()
+    prog[a] = c.prog[a]
+    prog[b] = c.prog[b]
+    c.prog = prog
+    _move_held_end(m, c, c.sa, c.sb)
+    if c.kind == LINE:
+        normal = _atan2(c.sb - prog[b], c.sa - prog[a])
+        c.pdir = normal - HALF_PI if c.side > 0 else normal + HALF_PI
+
+
+# -- units ----------------------------------------------------------------------------------------
+def convert(m: Machine, k: float) -> None:
+    """The units changed (``k`` new units per old one): the held moves and every length kept
+    follow, as rs274 converts its whole queue."""
+    c: Compensation = m.comp  # type: ignore[assignment]
+    pos = m.state.pos  # converted already; a held line may share it
+    for op in m.held:
+        if type(op) is list and op[1] is not pos:
+            fields = op[1]
+            for i in (0, 1, 2, 3, 5) if op[0] is ops.ArcFeed else (0, 1, 2):
+                fields[i] *= k
+    c.prog = [v * k if i < 3 else v for i, v in enumerate(c.prog)]
+    c.radius *= k
+    c.shift_a *= k
+    c.shift_b *= k
+    c.ca *= k
+    c.cb *= k
+    c.sa *= k
+    c.sb *= k
+    c.ka *= k
+    c.kb *= k
+    c.kr *= k
+    c.pa *= k
+    c.pb *= k

@@ -57,6 +57,13 @@ def _arc(m: Machine, r: Words, code: int) -> None:
     motion.arc(m, r.w, motion.end_point(m, r.w, False), code)
 
 
+def _units(m: Machine, r: Words, code: int) -> None:
+    metric = m.state.metric
+    modes.units(m, code)
+    if m.comp is not None and m.state.metric != metric:
+        ccomp.units_changed(m)
+
+
 def _cancel_motion(m: Machine, r: Words, code: int) -> None:
     m.state.motion = code
     m.emit(modes.MOTION_NONE)
@@ -83,7 +90,7 @@ _HANDLERS: dict[str, Handler] = {
     "subprogram": _subprogram,
     "dwell": lambda m, r, code: modes.dwell(m, r),
     "plane": lambda m, r, code: modes.plane(m, code),
-    "units": lambda m, r, code: modes.units(m, code),
+    "units": _units,
     "cutter_comp_off": lambda m, r, code: modes.cutter_comp_off(m),
     "tool_length_off": lambda m, r, code: tools.tool_length_off(m),
     "tool_length": tools.tool_length,
@@ -122,9 +129,34 @@ def _refusing(check: Handler, run: Handler) -> Handler:
     return handler
 
 
+def _comp_refusal(message: str, code_name: str) -> Handler:
+    """A code not supported yet that rs274 refuses while compensation is on."""
+    def handler(m: Machine, r: Words, code: int) -> None:
+        ccomp.refuse(m, message)
+        raise NgcSemanticError(f"{code_name} is not supported yet")
+
+    return handler
+
+
+def _ignored(run: Handler) -> Handler:
+    """A handler that does nothing while cutter radius compensation is on."""
+    def handler(m: Machine, r: Words, code: int) -> None:
+        if not ccomp.is_on(m):
+            run(m, r, code)
+
+    return handler
+
+
+def _wrapped(name: str, fn: Handler) -> Handler:
+    if name in ccomp.REFUSED:
+        return _refusing(ccomp.REFUSED[name], fn)
+    if name in ccomp.IGNORED:
+        return _ignored(fn)
+    return fn
+
+
 HANDLERS: Mapping[str, Handler] = MappingProxyType({
-    name: _refusing(ccomp.REFUSED[name], fn) if name in ccomp.REFUSED else fn
-    for name, fn in _HANDLERS.items()
+    name: _wrapped(name, fn) for name, fn in _HANDLERS.items()
 })
 
 _by_step = itemgetter(0)
@@ -137,8 +169,10 @@ class Dispatcher:
 
     def __init__(self, table: CodeTable, handlers: Mapping[str, Handler] = HANDLERS) -> None:
         self.table = table
-        self.g = {code: (row.step, _bind(row.handler, handlers)) for code, row in table.g.items()}
-        self.m = {code: (row.step, _bind(row.handler, handlers)) for code, row in table.m.items()}
+        self.g = {code: (row.step, _bind(row, codes.g_name(code), handlers))
+                  for code, row in table.g.items()}
+        self.m = {code: (row.step, _bind(row, f"M{code}", handlers))
+                  for code, row in table.m.items()}
         # The words that run (F, S, T).
         self.words = {letter: (step, handlers[name])
                       for letter, (step, name) in codes.WORD_STEPS.items() if name is not None}
@@ -157,6 +191,8 @@ class Dispatcher:
             fn(m, r, code)
         if m.state.tool_changed:
             tools.canon_position(m.state)
+            if m.comp is not None:
+                ccomp.tool_changed(m)
 
     def plan(self, m: Machine, r: Words) -> list[tuple[int, Handler, int]]:
         """The steps a checked block runs, in the order of execution: (step, handler, code).
@@ -195,9 +231,13 @@ def _diameter_x(r: Words) -> Words:
     return half.finish()
 
 
-def _bind(name: str | None, handlers: Mapping[str, Handler]) -> Handler | None:
+def _bind(row: codes.Code, code_name: str, handlers: Mapping[str, Handler]) -> Handler | None:
     """The handler a row names; None for a code that is not run by itself (G53 modifies motion)
-    or not supported (the check refuses it before dispatch)."""
+    or not supported (the check refuses it before dispatch, unless compensation's refusal of it
+    comes first: then the handler raises that)."""
+    name = row.handler
+    if name is None and row.comp_refusal:
+        return _comp_refusal(row.comp_refusal, code_name)
     if not name:
         return None
     try:

@@ -160,16 +160,18 @@ class FastPath:
 
     def _run_static(self, raw: str, number: int, r: Words, label: str) -> bool:
         """A line of literal words that moves nothing: checked (the check reads no state when
-        nothing moves), planned, kept, run."""
+        nothing moves and every code is supported), planned, kept, run."""
         m = self.m
         m.label = label
         m.line = m.state.line = number
         check(m.state, r, self.table)
         plan = self.dispatcher.plan(m, r)
-        cache = self._static
-        if len(cache) >= PLAIN_CACHE_SIZE:
-            cache.clear()
-        cache[raw] = (r, label, plan)
+        rows = self.table.g
+        if all(rows[code].handler for code in r.g.values()):
+            cache = self._static
+            if len(cache) >= PLAIN_CACHE_SIZE:
+                cache.clear()
+            cache[raw] = (r, label, plan)
         self.dispatcher.run(m, r, plan)
         return True
 

@@ -126,6 +126,12 @@ class Parameters:
 
     # -- reading (expression context) ---------------------------------------------------------
     def num(self, index: int) -> float:
+        if CURRENT_POSITION <= index < CURRENT_POSITION + 9 and self.state.ccomp != 400:
+            raise NgcRuntimeError("Cannot read current position with cutter radius compensation on")
+        return self.shown(index)
+
+    def shown(self, index: int) -> float:
+        """A numbered parameter as a comment shows it (the position even with compensation on)."""
         if CURRENT_POSITION <= index < CURRENT_POSITION + 9:
             axis = index - CURRENT_POSITION
             return self.state.pos[axis] if axis < AXES else 0.0

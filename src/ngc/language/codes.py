@@ -30,6 +30,9 @@ class Code(NamedTuple):
     axes: bool = False  # a group-0 code that takes the line's axis words (motion is suspended)
     requires: str = ""  # the line must hold one of these letters ("xyzabc": an axis word) ...
     missing: str = ""  # ... or this is the error
+    # rs274's refusal of this code while cutter radius compensation is on, raised at its step
+    # (before "not supported yet" for a code ngc does not run yet)
+    comp_refusal: str = ""
 
 
 # G-code modal groups (overview.adoc table "G-code Modal Groups").
@@ -103,9 +106,25 @@ def _motion(handler: str | None, uses: str = "") -> Code:
     return Code(G_MOTION, STEP_MOTION, handler, uses)
 
 
-def _no(group: int, step: int, uses: str = "") -> Code:
+def _no(group: int, step: int, uses: str = "", comp_refusal: str = "") -> Code:
     """A code the language knows and ngc does not run yet."""
-    return Code(group, step, None, uses)
+    return Code(group, step, None, uses, comp_refusal=comp_refusal)
+
+
+def _no_motion(uses: str, comp_refusal: str) -> Code:
+    """A motion ngc does not run yet that needs an axis word and is refused with compensation on."""
+    return Code(G_MOTION, STEP_MOTION, None, uses, requires=_AXES,
+                missing="All axes missing with motion code", comp_refusal=comp_refusal)
+
+
+_CYCLE_COMP = "Cannot use canned cycles with cutter compensation on"
+_SPLINE_COMP = "Cannot convert spline with cutter radius compensation"
+_PROBE_COMP = "Cannot probe with cutter radius comp on"
+_NOT_G0_G1 = "Bug code not g0 or g1"  # rs274's words for G33.1 and G76 with compensation on
+
+
+def _io(uses: str, what: str) -> Code:
+    return _no(M_IO, STEP_IO, uses, f"Cannot {what} with cutter radius compensation on")
 
 
 _G: dict[int, Code] = {
@@ -129,27 +148,27 @@ _G: dict[int, Code] = {
     10: _motion("feed"),
     20: _motion("arc", _ARC_WORDS),
     30: _motion("arc", _ARC_WORDS),
-    50: _motion(None, "ijpq"),  # G5 cubic spline
-    51: _motion(None, "ij"),  # G5.1 quadratic spline
+    50: Code(G_MOTION, STEP_MOTION, None, "ijpq", comp_refusal=_SPLINE_COMP),  # G5 cubic spline
+    51: _no_motion("ij", _SPLINE_COMP),  # G5.1 quadratic spline
     52: _motion(None, "pl"),  # G5.2 NURBS
     330: _motion(None, "k$"),  # G33 spindle synchronized
-    331: _motion(None, "ik$"),  # G33.1 rigid tap
-    382: _motion(None),
-    383: _motion(None),
-    384: _motion(None),
-    385: _motion(None),
-    730: _motion(None, "rlq"),
-    760: _motion(None, "ijklpqrhe$"),
+    331: _no_motion("ik$", _NOT_G0_G1),  # G33.1 rigid tap
+    382: _no_motion("", _PROBE_COMP),
+    383: _no_motion("", _PROBE_COMP),
+    384: _no_motion("", _PROBE_COMP),
+    385: _no_motion("", _PROBE_COMP),
+    730: _no_motion("rlq", _CYCLE_COMP),
+    760: _no_motion("ijklpqrhe$", _NOT_G0_G1),
     800: _motion("cancel_motion"),
-    810: _motion(None, "rl"),
-    820: _motion(None, "rlp"),
-    830: _motion(None, "rlq"),
-    840: _motion(None, "rlp"),
-    850: _motion(None, "rl"),
-    860: _motion(None, "rlp"),
-    870: _motion(None, "rlijk"),
-    880: _motion(None, "rlp"),
-    890: _motion(None, "rlp"),
+    810: _no_motion("rl", _CYCLE_COMP),
+    820: _no_motion("rlp", _CYCLE_COMP),
+    830: _no_motion("rlq", _CYCLE_COMP),
+    840: _no_motion("rlp", _CYCLE_COMP),
+    850: _no_motion("rl", _CYCLE_COMP),
+    860: _no_motion("rlp", _CYCLE_COMP),
+    870: _no_motion("rlijk", _CYCLE_COMP),
+    880: _no_motion("rlp", _CYCLE_COMP),
+    890: _no_motion("rlp", _CYCLE_COMP),
     # group 2: plane
     170: Code(G_PLANE, STEP_PLANE, "plane"),
     171: Code(G_PLANE, STEP_PLANE, "plane"),
@@ -228,13 +247,13 @@ _M: dict[int, Code] = {
     51: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p$"),
     52: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
     53: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
-    62: _no(M_IO, STEP_IO, "p"),
-    63: _no(M_IO, STEP_IO, "p"),
-    64: _no(M_IO, STEP_IO, "p"),
-    65: _no(M_IO, STEP_IO, "p"),
-    66: _no(M_IO, STEP_IO, "plqe"),
-    67: _no(M_IO, STEP_IO, "eq"),
-    68: _no(M_IO, STEP_IO, "eq"),
+    62: _io("p", "set motion output"),
+    63: _io("p", "set motion digital output"),
+    64: _io("p", "set auxiliary digital output"),
+    65: _io("p", "set auxiliary digital output"),
+    66: _io("plqe", "wait for digital input"),
+    67: _io("eq", "set motion analog output"),
+    68: _io("eq", "set auxiliary analog output"),
     70: _no(M_STATE, STEP_STATE),
     71: _no(M_STATE, STEP_STATE),
     72: _no(M_STATE, STEP_STATE),

@@ -12,6 +12,7 @@ from ...canon import ops
 from ...errors import NgcSemanticError
 from .. import comp
 from ..comp import Compensation
+from ..state import MM_PER_INCH
 
 if TYPE_CHECKING:
     from ..machine import Machine
@@ -147,6 +148,21 @@ REFUSED: Mapping[str, Callable[[Machine, Resolved, int], None]] = MappingProxyTy
     "tool_length_off": _always("Cannot change tool offset with cutter radius compensation on"),
     "retract_mode": _always("Cannot change retract mode with cutter radius compensation on"),
 })
+
+
+# The codes rs274 passes over without a word while compensation is on (handler names): G92.1,
+# G92.2 and G92.3 leave the offsets and their parameters as they are.
+IGNORED = frozenset({"g92_reset"})
+
+
+def units_changed(it: Machine) -> None:
+    """G20 / G21 changed the units: the held moves and the compensation's points follow."""
+    comp.convert(it, MM_PER_INCH if it.state.metric else 1.0 / MM_PER_INCH)
+
+
+def tool_changed(it: Machine) -> None:
+    """A line with M6 or M61 ran: the current point is the canon's."""
+    comp.take_canon_point(it)
 
 
 def machine_move(it: Machine) -> None:

@@ -138,7 +138,7 @@ def _parameter(it: Machine, token: str) -> float | None:
     index = (min(int(token[1:]), _LONG_MAX) + _INT_WRAP // 2) % _INT_WRAP - _INT_WRAP // 2
     if not 0 <= index < len(params.numbered):
         return None
-    return params.num(index)
+    return params.shown(index)
 
 
 def stop(it: Machine, code: int) -> None:
