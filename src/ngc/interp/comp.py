@@ -223,12 +223,27 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     t = _atan2(eb - pb, ea - pa)
     n = t + HALF_PI if side > 0 else t - HALF_PI
     dx, dy = r * _cos(n), r * _sin(n)
-    sa, sb = pa + dx, pb + dy
-    _corner(m, c, t, sa, sb, LINE, 0.0, 0.0, 0.0, 0, op_type is ops.StraightTraverse)
+    _corner(m, c, t, pa + dx, pb + dy, LINE, 0.0, 0.0, 0.0, 0, op_type is ops.StraightTraverse)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
-    c.start = m.state.pos
-    _hold(m, c, LINE, op_type, _out(c, m, end, ea + dx, eb + dy))
+    st = m.state
+    c.start = st.pos
+    # _hold(m, c, LINE, op_type, _out(c, m, end, ea + dx, eb + dy)), written out: the hot path
+    held = m.held
+    if held:
+        flush(m)
+    na, nb = ea + dx, eb + dy
+    out = end.copy()
+    out[a] = na + c.shift_a
+    out[b] = nb + c.shift_b
+    c.ca = na
+    c.cb = nb
+    st.pos = out
+    item = [op_type, out]
+    held.append(item)
+    c.item = item
+    c.kind = LINE
+    c.ptype = op_type
     c.prog = end
 
 

@@ -46,6 +46,7 @@ from ..language.parser import (
     words_of,
 )
 from ..language.words import Words
+from . import comp
 from .check import check
 from .dispatch import Dispatcher, Handler
 from .handlers import modes, motion, program
@@ -222,7 +223,9 @@ class FastPath:
             return
         if compensation is not None:
             if code == 0:
-                motion.traverse(m, end)
+                comp.straight(m, ops.StraightTraverse, end)
+            elif st.feed_mode == 940 and st.feed != 0.0:
+                comp.straight(m, ops.StraightFeed, end)
             else:
                 motion.feed(m, w, end)
             return
