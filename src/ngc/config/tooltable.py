@@ -22,6 +22,25 @@ OFFSET_LETTERS = "xyzabcuvw"
 _NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 
 
+# Tool lengths reach a program through millimetres: rs274 divides a table value (inches) by this
+# inch-per-mm factor, a little off 1/25.4, then by 25.4 for a program in inches; a length a
+# program sets (G10 L1/L10/L11) goes back the other way.  #5400-#5413 read the table's value.
+INCH_PER_MM = 0.03937007874016
+MM_PER_INCH = 25.4
+
+
+def length_to_program(value: float, metric: bool) -> float:
+    """A tool table length (inches) in program units, as G43 and G41/G42 D use it."""
+    mm = value / INCH_PER_MM
+    return mm if metric else mm / MM_PER_INCH
+
+
+def length_from_program(value: float, metric: bool) -> float:
+    """A length in program units (G10 L1 R, Z...) as the tool table keeps it (inches)."""
+    mm = value if metric else value * MM_PER_INCH
+    return mm * INCH_PER_MM
+
+
 class ToolEntry(NamedTuple):
     """One tool: offsets X Y Z A B C U V W, diameter and lengths in inches, angles in degrees."""
 

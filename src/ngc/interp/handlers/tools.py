@@ -16,7 +16,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ...canon import ops
-from ...config.tooltable import ToolEntry
+from ...config.tooltable import ToolEntry, length_from_program, length_to_program
 from ...errors import NgcSemanticError
 from ...language.codes import AXIS_LETTERS
 from ..frames import Vec, rotate, to_machine, to_program
@@ -38,8 +38,8 @@ def _not_found(number: int) -> NgcSemanticError:
 
 
 def _to_program_units(st: State, offsets: tuple[float, ...]) -> list[float]:
-    k = st.units_factor
-    return [v * k if _LINEAR9[i] else v for i, v in enumerate(offsets)]
+    metric = st.metric
+    return [length_to_program(v, metric) if _LINEAR9[i] else v for i, v in enumerate(offsets)]
 
 
 def _lookup(it: Machine, number: int) -> ToolEntry:
@@ -204,14 +204,14 @@ def g10_tools(it: Machine, r: Words, l_word: int) -> None:
             raise NgcSemanticError("Invalid tool orientation")
         orientation = int(_round(q))
     offsets = list(entry.offsets)
-    k = st.units_factor
+    metric = st.metric
     if l_word == 1:
         values = {i: v for i, v in axes}
     else:
         values = _measured(it, dict(axes), l_word, entry)
     for i, v in values.items():
-        offsets[i] = v / k if LINEAR[i] else v
-    diameter = 2.0 * w["r"] / k if "r" in w else entry.diameter
+        offsets[i] = length_from_program(v, metric) if LINEAR[i] else v
+    diameter = length_from_program(2.0 * w["r"], metric) if "r" in w else entry.diameter
     entry = entry._replace(offsets=tuple(offsets), diameter=diameter,
                            frontangle=w.get("i", entry.frontangle),
                            backangle=w.get("j", entry.backangle), orientation=orientation)
