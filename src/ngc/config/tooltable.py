@@ -61,14 +61,17 @@ EMPTY_SPINDLE = ToolEntry(0, -1)
 
 
 class ToolTable(NamedTuple):
-    """A tool table as read: entries in file order, and the lines skipped."""
+    """A tool table as read: entries in file order, the lines skipped, and the entry of a line
+    without a P word (the tool in the spindle)."""
 
     entries: tuple[ToolEntry, ...] = ()
     skipped: tuple[str, ...] = ()
+    spindle: ToolEntry | None = None
 
     def find(self, number: int) -> ToolEntry | None:
-        """The first entry of tool ``number``, or None."""
-        for entry in self.entries:
+        """The first entry of tool ``number`` (the spindle's last), or None."""
+        spindle = () if self.spindle is None else (self.spindle,)
+        for entry in (*self.entries, *spindle):
             if entry.number == number and number >= 0:
                 return entry
         return None
@@ -86,6 +89,15 @@ def _number(text: str) -> float | None:
 
 def parse_line(line: str) -> ToolEntry | str | None:
     """One line: an entry, None (blank or comment only), or the line itself if it is skipped."""
+    found = _parse(line)
+    if found is None or isinstance(found, str):
+        return found
+    entry, _ = found
+    return entry
+
+
+def _parse(line: str) -> tuple[ToolEntry, bool] | str | None:
+    """:func:`parse_line`, and whether the entry's line has a P word."""
     body, _, comment = line.partition(";")
     words = body.split()
     if not words:
@@ -100,26 +112,33 @@ def parse_line(line: str) -> ToolEntry | str | None:
     if "t" not in fields:
         return None
     offsets = tuple(fields.get(letter, 0.0) for letter in OFFSET_LETTERS)
-    return ToolEntry(int(fields["t"]), int(fields.get("p", 0)), offsets, fields.get("d", 0.0),
-                     fields.get("i", 0.0), fields.get("j", 0.0), int(fields.get("q", 0)),
-                     comment.strip())
+    entry = ToolEntry(int(fields["t"]), int(fields.get("p", 0)), offsets, fields.get("d", 0.0),
+                      fields.get("i", 0.0), fields.get("j", 0.0), int(fields.get("q", 0)),
+                      comment.strip())
+    return entry, "p" in fields
 
 
 def parse_tool_table(text: str) -> ToolTable:
-    """A tool table file's text."""
+    """A tool table file's text.  A line without a P word is the tool in the spindle (rs274 puts
+    it in slot 0, the last such line wins); the others take slots 1..n in file order."""
     entries: list[ToolEntry] = []
     skipped: list[str] = []
+    spindle: ToolEntry | None = None
     for raw in text.splitlines():
         line = raw.rstrip("\r\n")
-        found = parse_line(line)
+        found = _parse(line)
         if isinstance(found, str):
             skipped.append(found)
             first = found.split()[0]
             if first[0] in "tT" and _number(first[1:]) is not None:
                 entries.append(UNREAD)  # rs274 gave the line its slot before it gave up
         elif found is not None:
-            entries.append(found)
-    return ToolTable(tuple(entries), tuple(skipped))
+            entry, has_pocket = found
+            if has_pocket:
+                entries.append(entry)
+            else:
+                spindle = entry
+    return ToolTable(tuple(entries), tuple(skipped), spindle)
 
 
 def read_tool_table(path: str, *, strict: bool = False) -> ToolTable:
@@ -147,13 +166,15 @@ DEFAULT_TABLE = parse_tool_table(
 
 
 class Tools:
-    """The machine's tool data while a program runs: slot 0 is the spindle, slots 1..n the
-    table's entries in file order (G10 L1/L10/L11 replace them)."""
+    """The machine's tool data while a program runs: slot 0 is the spindle (first the table's
+    line without a P word, if any), slots 1..n the table's entries in file order (G10
+    L1/L10/L11 replace them)."""
 
     __slots__ = ("slots",)
 
     def __init__(self, table: ToolTable = DEFAULT_TABLE) -> None:
-        self.slots: list[ToolEntry] = [EMPTY_SPINDLE, *table.entries]
+        spindle = EMPTY_SPINDLE if table.spindle is None else table.spindle
+        self.slots: list[ToolEntry] = [spindle, *table.entries]
 
     def find(self, number: int) -> ToolEntry | None:
         """The first entry of tool ``number`` in the table (not the spindle), or None."""
@@ -161,13 +182,13 @@ class Tools:
         return None if index is None else self.slots[index]
 
     def index(self, number: int) -> int | None:
-        """The slot of tool ``number`` (1-based, file order), or None."""
+        """The slot of tool ``number`` (1-based, file order; the spindle's slot 0 last), or None."""
         if number < 0:
             return None
         for i in range(1, len(self.slots)):
             if self.slots[i].number == number:
                 return i
-        return None
+        return 0 if self.slots[0].number == number else None
 
     def pocket(self, index: int) -> int:
         """The pocket of the entry in slot ``index`` (-1 for no such slot), as rs274 reads it."""
