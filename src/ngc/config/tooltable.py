@@ -70,7 +70,7 @@ class ToolTable(NamedTuple):
 
     def find(self, number: int) -> ToolEntry | None:
         """The first entry of tool ``number`` (the spindle's last), or None."""
-        spindle = () if self.spindle is None else (self.spindle,)
+        spindle: tuple[ToolEntry, ...] = () if self.spindle is None else (self.spindle,)
         for entry in (*self.entries, *spindle):
             if entry.number == number and number >= 0:
                 return entry
