@@ -7,8 +7,9 @@ print a slot, not a tool number.  Tool data are in inches; the tool length offse
 (``state.tlo``) is in program units, as ``USE_TOOL_LENGTH_OFFSET`` prints it.
 
 A change of the tool length offset keeps the machine still: the current point, in program
-coordinates, moves by the change.  The canon does not follow that, and M6 and M61 take the
-canon's current point back (``state.canon_pos``), as rs274 does.
+coordinates, moves by the change.  The canon does not follow that (nor a rotation change), and
+M6 and M61 take the canon's current point back (``state.canon_pos``, :func:`hold_canon`), as
+rs274 does.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ from ...errors import NgcSemanticError
 from ...language.codes import AXIS_LETTERS
 from ..frames import Vec, rotate, to_machine, to_program
 from ..parameters import COORD_STRIDE, G54_ORIGIN
-from ..state import AXES, LINEAR
+from ..state import AXES, LINEAR, MM_PER_INCH
 
 if TYPE_CHECKING:
     from ...language.words import Words
@@ -117,8 +118,36 @@ def canon_position(st: State) -> None:
     """At the end of a line with M6 or M61 rs274 takes the canon's current point as its own."""
     st.tool_changed = False
     if st.canon_pos is not None and st.canon_anchor is st.pos:
-        st.pos = st.canon_pos
+        metric = st.metric
+        st.pos = [_from_mm(v, i, metric) - st.g5x[i] - st.g92[i] for i, v in enumerate(st.canon_pos)]
     st.canon_pos = st.canon_anchor = None
+
+
+def hold_canon(st: State) -> None:
+    """Before the current point changes without a move (a tool length offset or rotation
+    change): remember where the canon's point is, unless that is already known.
+
+    The canon keeps the last move's end point, in program coordinates: it follows a change of
+    the G5x origin or of the G92/G52 offset (by the change along each axis, unrotated) and of
+    the units, not a rotation or tool length offset change.  It is kept here as the sum of the
+    point and those offsets, in millimetres, which none of those changes alter; the ``pos``
+    list it belongs to is ``canon_anchor`` (a move replaces ``pos``)."""
+    if st.canon_pos is None or st.canon_anchor is not st.pos:
+        metric = st.metric
+        st.canon_pos = [_to_mm(st.pos[i] + st.g5x[i] + st.g92[i], i, metric) for i in range(AXES)]
+
+
+def held(st: State) -> None:
+    """After such a change: the canon's point belongs to the new current point."""
+    st.canon_anchor = st.pos
+
+
+def _to_mm(value: float, axis: int, metric: bool) -> float:
+    return value if metric or not LINEAR[axis] else value * MM_PER_INCH
+
+
+def _from_mm(value: float, axis: int, metric: bool) -> float:
+    return value if metric or not LINEAR[axis] else value / MM_PER_INCH
 
 
 # -- tool length offsets ------------------------------------------------------------------------
@@ -162,15 +191,14 @@ def tool_length_off(it: Machine) -> None:
 def _apply(it: Machine, new: list[float]) -> None:
     """Put a tool length offset in effect: the current point moves by the change."""
     st = it.state
-    if st.canon_pos is None or st.canon_anchor is not st.pos:
-        st.canon_pos = list(st.pos)
+    hold_canon(st)
     old = st.tlo
     st.tlo = new
     delta = [old[i] - new[i] for i in range(AXES)]  # machine axes
     if st.rotation:
         delta[0], delta[1] = rotate(delta[0], delta[1], -st.rotation)
     st.pos = [st.pos[i] + delta[i] for i in range(AXES)]
-    st.canon_anchor = st.pos
+    held(st)
     it.emit(ops.UseToolLengthOffset(*new))
 
 
