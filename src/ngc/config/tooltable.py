@@ -170,11 +170,25 @@ class Tools:
     line without a P word, if any), slots 1..n the table's entries in file order (G10
     L1/L10/L11 replace them)."""
 
-    __slots__ = ("slots",)
+    __slots__ = ("slots", "spindle_pocket")
 
     def __init__(self, table: ToolTable = DEFAULT_TABLE) -> None:
         spindle = EMPTY_SPINDLE if table.spindle is None else table.spindle
         self.slots: list[ToolEntry] = [spindle, *table.entries]
+        # The pocket of slot 0 in the canon's copy of the table: G10 L1 gives the spindle's
+        # entry a tool's data and pocket, the canon's copy only the data; M6 copies a slot
+        # whole.  rs274 reads the canon's copy back after M6 and M61 (:meth:`reload`).
+        self.spindle_pocket = spindle.pocket
+
+    def load(self, index: int) -> None:
+        """M6: the spindle takes slot ``index`` (the slot itself for 0)."""
+        if index > 0:
+            self.slots[0] = self.slots[index]
+            self.spindle_pocket = self.slots[index].pocket
+
+    def reload(self) -> None:
+        """The spindle's entry as the canon has it (after M6 or M61)."""
+        self.slots[0] = self.slots[0]._replace(pocket=self.spindle_pocket)
 
     def find(self, number: int) -> ToolEntry | None:
         """The first entry of tool ``number`` in the table (not the spindle), or None."""

@@ -88,8 +88,7 @@ def change_tool(it: Machine) -> None:
     st.spindle = 0  # the spindle stops for the change
     it.emit(ops.StopSpindleTurning(0))
     it.emit(ops.ChangeTool(index))
-    if index > 0:
-        st.tools.slots[0] = st.tools.slots[index]
+    st.tools.load(index)
     st.tool_index = index
     st.tool_changed = True
 
@@ -115,8 +114,10 @@ def _round(value: float) -> float:
 
 
 def canon_position(st: State) -> None:
-    """At the end of a line with M6 or M61 rs274 takes the canon's current point as its own."""
+    """At the end of a line with M6 or M61 rs274 takes the canon's current point as its own,
+    and the spindle's entry as the canon has it."""
     st.tool_changed = False
+    st.tools.reload()
     if st.canon_pos is not None and st.canon_anchor is st.pos:
         metric = st.metric
         st.pos = [_from_mm(v, i, metric) - st.g5x[i] - st.g92[i] for i, v in enumerate(st.canon_pos)]
@@ -246,7 +247,7 @@ def g10_tools(it: Machine, r: Words, l_word: int) -> None:
     tools.slots[index] = entry
     _emit_entry(it, index, entry)
     if index == st.tool_index:
-        tools.slots[0] = entry
+        tools.slots[0] = entry  # with its pocket (the canon's copy keeps its own)
         _emit_entry(it, 0, entry)
 
 
