@@ -20,7 +20,7 @@ from ...canon import ops
 from ...config.tooltable import ToolEntry, length_from_program, length_to_program
 from ...errors import NgcSemanticError
 from ...language.codes import AXIS_LETTERS
-from ..frames import Vec, rotate, to_machine, to_program
+from ..frames import rotate, to_machine
 from ..parameters import COORD_STRIDE, G54_ORIGIN
 from ..state import AXES, LINEAR, MM_PER_INCH
 
@@ -260,26 +260,37 @@ def _emit_entry(it: Machine, index: int, e: ToolEntry) -> None:
 def _measured(
     it: Machine, given: dict[int, float], l_word: int, entry: ToolEntry
 ) -> dict[int, float]:
-    """L10 / L11: the offsets (program units) that make the current point read ``given``.
+    """L10 / L11: the offsets (program units) that make the current point read ``given``: L10 in
+    the current coordinate system, L11 in G59.3 (its origin and rotation, without G52/G92).
 
-    L10: an axis not given keeps the coordinate the current point would have with the tool's
-    entry as the offset (with a rotation, a given X or Y sets both)."""
+    An axis not given keeps the coordinate the current point would have with the tool's entry
+    as the offset (with a rotation, a given X or Y sets both)."""
     st = it.state
     machine = to_machine(st, st.pos)
+    tool = _to_program_units(st, entry.offsets)
     if l_word == 10:
-        point = to_program(st, machine, _to_program_units(st, entry.offsets))
-        for i, v in given.items():
-            point[i] = v
-        base = to_machine(st, point, tlo=False)
-        changed = set(given)
-        if st.rotation and changed & {0, 1}:
-            changed |= {0, 1}  # a rotated X or Y moves the offset along both
-        return {i: machine[i] - base[i] for i in changed}
-    origin_base = G54_ORIGIN + COORD_STRIDE * (_G59_3 - 1)
-    numbered = it.params.numbered
-    k = st.units_factor
-    origin: Vec = [numbered[origin_base + i] * (k if LINEAR[i] else 1.0) for i in range(AXES)]
-    return {i: machine[i] - origin[i] - v for i, v in given.items()}
+        origin, rotation, shift = st.g5x, st.rotation, st.g92
+    else:
+        base = G54_ORIGIN + COORD_STRIDE * (_G59_3 - 1)
+        numbered = it.params.numbered
+        k = st.units_factor
+        origin = [numbered[base + i] * (k if LINEAR[i] else 1.0) for i in range(AXES)]
+        rotation, shift = numbered[base + 9], [0.0] * AXES
+    # The point in that frame, with the entry's offset.
+    point = [machine[i] - origin[i] - (tool[i] if i < 3 else 0.0) for i in range(AXES)]
+    point[0], point[1] = rotate(point[0], point[1], -rotation)
+    point = [point[i] - shift[i] for i in range(AXES)]
+    for i, v in given.items():
+        point[i] = v
+    # Back to the machine, without a tool length offset.
+    back = [point[i] + shift[i] for i in range(AXES)]
+    if rotation:
+        back[0], back[1] = rotate(back[0], back[1], rotation)
+    back = [back[i] + origin[i] for i in range(AXES)]
+    changed = set(given)
+    if rotation and changed & {0, 1}:
+        changed |= {0, 1}  # a rotated X or Y moves the offset along both
+    return {i: machine[i] - back[i] for i in changed}
 
 
 # -- G7 / G8 ------------------------------------------------------------------------------------
