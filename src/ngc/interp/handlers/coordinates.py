@@ -60,6 +60,9 @@ def emit_rotation(it: Machine) -> None:
     it.emit(ops.SetXYRotation(it.state.rotation))
 
 
+_NO_TLO = (0.0,) * AXES
+
+
 def _keep_machine_position(it: Machine) -> Vec:
     return to_machine(it.state, it.state.pos)
 
@@ -96,11 +99,13 @@ def select_system(it: Machine, code: int) -> None:
     if index == st.coord_index:
         it.emit(ops.Comment("interpreter: continuing to use same coordinate system"))
         return
-    machine = _keep_machine_position(it)
+    # The point keeps its place without the tool length offset (which rs274 adds to a rotary
+    # axis going to the machine but does not take off coming back).
+    machine = to_machine(st, st.pos, tlo=False)
     tools.hold_canon(st)
     load_system(it, index)
     it.params.numbered[5220] = float(index)
-    st.pos = to_program(st, machine)
+    st.pos = to_program(st, machine, _NO_TLO)
     tools.held(st)
     emit_g5x(it)
     emit_g92(it)
