@@ -46,7 +46,7 @@ def _pos(axis: int) -> Getter:
 
 
 def _machine(s: State, axis: int) -> float:
-    return to_machine(s, s.pos)[axis]
+    return to_machine(s, s.pos, rotary=True)[axis]
 
 
 # Predefined read-only named parameters (overview.adoc, "Predefined Named Parameters").

@@ -60,11 +60,8 @@ def emit_rotation(it: Machine) -> None:
     it.emit(ops.SetXYRotation(it.state.rotation))
 
 
-_NO_TLO = (0.0,) * AXES
-
-
 def _keep_machine_position(it: Machine) -> Vec:
-    return to_machine(it.state, it.state.pos)
+    return to_machine(it.state, it.state.pos, rotary=True)
 
 
 # -- coordinate system selection ----------------------------------------------------------------
@@ -99,13 +96,11 @@ def select_system(it: Machine, code: int) -> None:
     if index == st.coord_index:
         it.emit(ops.Comment("interpreter: continuing to use same coordinate system"))
         return
-    # The point keeps its place without the tool length offset (which rs274 adds to a rotary
-    # axis going to the machine but does not take off coming back).
-    machine = to_machine(st, st.pos, tlo=False)
+    machine = to_machine(st, st.pos)
     tools.hold_canon(st)
     load_system(it, index)
     it.params.numbered[5220] = float(index)
-    st.pos = to_program(st, machine, _NO_TLO)
+    st.pos = to_program(st, machine)
     tools.held(st)
     emit_g5x(it)
     emit_g92(it)

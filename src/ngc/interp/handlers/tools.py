@@ -266,7 +266,7 @@ def _measured(
     An axis not given keeps the coordinate the current point would have with the tool's entry
     as the offset (with a rotation, a given X or Y sets both)."""
     st = it.state
-    machine = to_machine(st, st.pos)
+    machine = to_machine(st, st.pos, rotary=True)
     tool = _to_program_units(st, entry.offsets)
     if l_word == 10:
         origin, rotation, shift = st.g5x, st.rotation, st.g92
