@@ -266,31 +266,38 @@ def _measured(
     An axis not given keeps the coordinate the current point would have with the tool's entry
     as the offset (with a rotation, a given X or Y sets both)."""
     st = it.state
-    machine = to_machine(st, st.pos, rotary=True)
     tool = _to_program_units(st, entry.offsets)
+    changed = set(given)
     if l_word == 10:
-        origin, rotation, shift = st.g5x, st.rotation, st.g92
-    else:
-        base = G54_ORIGIN + COORD_STRIDE * (_G59_3 - 1)
-        numbered = it.params.numbered
-        k = st.units_factor
-        origin = [numbered[base + i] * (k if LINEAR[i] else 1.0) for i in range(AXES)]
-        rotation, shift = numbered[base + 9], [0.0] * AXES
-    # The point in that frame, with the entry's offset.
+        # The point with the entry's offset in effect (as G43 would move it), and the offset
+        # that moves it to the given coordinates: rs274's arithmetic, to the last bit.
+        delta = [st.tlo[i] - tool[i] for i in range(AXES)]
+        if st.rotation:
+            delta[0], delta[1] = rotate(delta[0], delta[1], -st.rotation)
+        point = [st.pos[i] + delta[i] for i in range(AXES)]
+        diff = [point[i] - given.get(i, point[i]) for i in range(AXES)]
+        if st.rotation:
+            diff[0], diff[1] = rotate(diff[0], diff[1], st.rotation)
+            if changed & {0, 1}:
+                changed |= {0, 1}  # a rotated X or Y moves the offset along both
+        return {i: tool[i] + diff[i] for i in changed}
+    machine = to_machine(st, st.pos, rotary=True)
+    base = G54_ORIGIN + COORD_STRIDE * (_G59_3 - 1)
+    numbered = it.params.numbered
+    k = st.units_factor
+    origin = [numbered[base + i] * (k if LINEAR[i] else 1.0) for i in range(AXES)]
+    rotation = numbered[base + 9]
+    # The point in G59.3, with the entry's offset.
     point = [machine[i] - origin[i] - (tool[i] if i < 3 else 0.0) for i in range(AXES)]
     point[0], point[1] = rotate(point[0], point[1], -rotation)
-    point = [point[i] - shift[i] for i in range(AXES)]
     for i, v in given.items():
         point[i] = v
     # Back to the machine, without a tool length offset.
-    back = [point[i] + shift[i] for i in range(AXES)]
     if rotation:
-        back[0], back[1] = rotate(back[0], back[1], rotation)
-    back = [back[i] + origin[i] for i in range(AXES)]
-    changed = set(given)
+        point[0], point[1] = rotate(point[0], point[1], rotation)
     if rotation and changed & {0, 1}:
         changed |= {0, 1}  # a rotated X or Y moves the offset along both
-    return {i: machine[i] - back[i] for i in changed}
+    return {i: machine[i] - (point[i] + origin[i]) for i in changed}
 
 
 # -- G7 / G8 ------------------------------------------------------------------------------------
