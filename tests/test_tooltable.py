@@ -6,7 +6,15 @@ from pathlib import Path
 
 import pytest
 
-from ngc.config.tooltable import DEFAULT_TABLE, UNREAD, Tools, parse_tool_table, read_tool_table
+from ngc.config.tooltable import (
+    DEFAULT_TABLE,
+    UNREAD,
+    Tools,
+    length_from_program,
+    length_to_program,
+    parse_tool_table,
+    read_tool_table,
+)
 from ngc.errors import NgcConfigError
 from ngc.options import MachineOptions, load_setup
 
@@ -45,6 +53,23 @@ def test_first_entry_of_a_number_wins() -> None:
     assert tools.index(1) == 1
     assert tools.index(-1) is None
     assert tools.pocket(5) == -1
+
+
+def test_a_line_without_pocket_is_the_tool_in_the_spindle() -> None:
+    table = parse_tool_table("T1 P1 Z1\nT5 Z5\nT2 Z2\nT3 P0 Z3\n")
+    assert [e.number for e in table.entries] == [1, 3]  # P0 is an ordinary slot
+    assert table.spindle is not None and table.spindle.number == 2  # the last line without P
+    assert table.find(2) is table.spindle and table.find(5) is None
+    tools = Tools(table)
+    assert tools.spindle.number == 2 and tools.index(2) == 0 and tools.index(3) == 2
+    tools.slots[0] = tools.slots[1]  # M6 T1: tool 2 was only in the spindle
+    assert tools.index(1) == 1 and tools.index(2) is None
+
+
+def test_tool_lengths_in_program_units() -> None:
+    assert length_to_program(0.12345, metric=False) < 0.12345  # rs274 shows 0.1234
+    assert f"{length_to_program(0.00025, metric=True):.4f}" == "0.0063"
+    assert length_to_program(length_from_program(1.23455, True), True) == 1.23455
 
 
 def test_default_table() -> None:

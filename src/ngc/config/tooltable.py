@@ -22,6 +22,25 @@ OFFSET_LETTERS = "xyzabcuvw"
 _NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 
 
+# Tool lengths reach a program through millimetres: rs274 divides a table value (inches) by this
+# inch-per-mm factor, a little off 1/25.4, then by 25.4 for a program in inches; a length a
+# program sets (G10 L1/L10/L11) goes back the other way.  #5400-#5413 read the table's value.
+INCH_PER_MM = 0.03937007874016
+MM_PER_INCH = 25.4
+
+
+def length_to_program(value: float, metric: bool) -> float:
+    """A tool table length (inches) in program units, as G43 and G41/G42 D use it."""
+    mm = value / INCH_PER_MM
+    return mm if metric else mm / MM_PER_INCH
+
+
+def length_from_program(value: float, metric: bool) -> float:
+    """A length in program units (G10 L1 R, Z...) as the tool table keeps it (inches)."""
+    mm = value if metric else value * MM_PER_INCH
+    return mm * INCH_PER_MM
+
+
 class ToolEntry(NamedTuple):
     """One tool: offsets X Y Z A B C U V W, diameter and lengths in inches, angles in degrees."""
 
@@ -42,14 +61,17 @@ EMPTY_SPINDLE = ToolEntry(0, -1)
 
 
 class ToolTable(NamedTuple):
-    """A tool table as read: entries in file order, and the lines skipped."""
+    """A tool table as read: entries in file order, the lines skipped, and the entry of a line
+    without a P word (the tool in the spindle)."""
 
     entries: tuple[ToolEntry, ...] = ()
     skipped: tuple[str, ...] = ()
+    spindle: ToolEntry | None = None
 
     def find(self, number: int) -> ToolEntry | None:
-        """The first entry of tool ``number``, or None."""
-        for entry in self.entries:
+        """The first entry of tool ``number`` (the spindle's last), or None."""
+        spindle: tuple[ToolEntry, ...] = () if self.spindle is None else (self.spindle,)
+        for entry in (*self.entries, *spindle):
             if entry.number == number and number >= 0:
                 return entry
         return None
@@ -67,6 +89,15 @@ def _number(text: str) -> float | None:
 
 def parse_line(line: str) -> ToolEntry | str | None:
     """One line: an entry, None (blank or comment only), or the line itself if it is skipped."""
+    found = _parse(line)
+    if found is None or isinstance(found, str):
+        return found
+    entry, _ = found
+    return entry
+
+
+def _parse(line: str) -> tuple[ToolEntry, bool] | str | None:
+    """:func:`parse_line`, and whether the entry's line has a P word."""
     body, _, comment = line.partition(";")
     words = body.split()
     if not words:
@@ -81,26 +112,33 @@ def parse_line(line: str) -> ToolEntry | str | None:
     if "t" not in fields:
         return None
     offsets = tuple(fields.get(letter, 0.0) for letter in OFFSET_LETTERS)
-    return ToolEntry(int(fields["t"]), int(fields.get("p", 0)), offsets, fields.get("d", 0.0),
-                     fields.get("i", 0.0), fields.get("j", 0.0), int(fields.get("q", 0)),
-                     comment.strip())
+    entry = ToolEntry(int(fields["t"]), int(fields.get("p", 0)), offsets, fields.get("d", 0.0),
+                      fields.get("i", 0.0), fields.get("j", 0.0), int(fields.get("q", 0)),
+                      comment.strip())
+    return entry, "p" in fields
 
 
 def parse_tool_table(text: str) -> ToolTable:
-    """A tool table file's text."""
+    """A tool table file's text.  A line without a P word is the tool in the spindle (rs274 puts
+    it in slot 0, the last such line wins); the others take slots 1..n in file order."""
     entries: list[ToolEntry] = []
     skipped: list[str] = []
+    spindle: ToolEntry | None = None
     for raw in text.splitlines():
         line = raw.rstrip("\r\n")
-        found = parse_line(line)
+        found = _parse(line)
         if isinstance(found, str):
             skipped.append(found)
             first = found.split()[0]
             if first[0] in "tT" and _number(first[1:]) is not None:
                 entries.append(UNREAD)  # rs274 gave the line its slot before it gave up
         elif found is not None:
-            entries.append(found)
-    return ToolTable(tuple(entries), tuple(skipped))
+            entry, has_pocket = found
+            if has_pocket:
+                entries.append(entry)
+            else:
+                spindle = entry
+    return ToolTable(tuple(entries), tuple(skipped), spindle)
 
 
 def read_tool_table(path: str, *, strict: bool = False) -> ToolTable:
@@ -128,13 +166,29 @@ DEFAULT_TABLE = parse_tool_table(
 
 
 class Tools:
-    """The machine's tool data while a program runs: slot 0 is the spindle, slots 1..n the
-    table's entries in file order (G10 L1/L10/L11 replace them)."""
+    """The machine's tool data while a program runs: slot 0 is the spindle (first the table's
+    line without a P word, if any), slots 1..n the table's entries in file order (G10
+    L1/L10/L11 replace them)."""
 
-    __slots__ = ("slots",)
+    __slots__ = ("slots", "spindle_pocket")
 
     def __init__(self, table: ToolTable = DEFAULT_TABLE) -> None:
-        self.slots: list[ToolEntry] = [EMPTY_SPINDLE, *table.entries]
+        spindle = EMPTY_SPINDLE if table.spindle is None else table.spindle
+        self.slots: list[ToolEntry] = [spindle, *table.entries]
+        # The pocket of slot 0 in the canon's copy of the table: G10 L1 gives the spindle's
+        # entry a tool's data and pocket, the canon's copy only the data; M6 copies a slot
+        # whole.  rs274 reads the canon's copy back after M6 and M61 (:meth:`reload`).
+        self.spindle_pocket = spindle.pocket
+
+    def load(self, index: int) -> None:
+        """M6: the spindle takes slot ``index`` (the slot itself for 0)."""
+        if index > 0:
+            self.slots[0] = self.slots[index]
+            self.spindle_pocket = self.slots[index].pocket
+
+    def reload(self) -> None:
+        """The spindle's entry as the canon has it (after M6 or M61)."""
+        self.slots[0] = self.slots[0]._replace(pocket=self.spindle_pocket)
 
     def find(self, number: int) -> ToolEntry | None:
         """The first entry of tool ``number`` in the table (not the spindle), or None."""
@@ -142,13 +196,13 @@ class Tools:
         return None if index is None else self.slots[index]
 
     def index(self, number: int) -> int | None:
-        """The slot of tool ``number`` (1-based, file order), or None."""
+        """The slot of tool ``number`` (1-based, file order; the spindle's slot 0 last), or None."""
         if number < 0:
             return None
         for i in range(1, len(self.slots)):
             if self.slots[i].number == number:
                 return i
-        return None
+        return 0 if self.slots[0].number == number else None
 
     def pocket(self, index: int) -> int:
         """The pocket of the entry in slot ``index`` (-1 for no such slot), as rs274 reads it."""

@@ -12,20 +12,24 @@ Vec = list[float]
 _NO_TLO = (0.0,) * AXES
 
 
-def to_machine(st: State, prog: Vec, tlo: bool = True) -> Vec:
+def to_machine(st: State, prog: Vec, tlo: bool = True, rotary: bool = False) -> Vec:
     """Program coordinates -> machine coordinates (G92 offset, XY rotation, G5x origin, tool
-    length offset; ``tlo=False``: without the tool length offset)."""
+    length offset of X Y Z; ``tlo=False``: without the tool length offset).
+
+    ``rotary``: with the rotary axes' tool length offset too, which rs274 adds where it reads a
+    machine position (G28.1/G30.1, #<_abs_a>, G10 L10/L11) though :func:`to_program` does not
+    take it off; not where it goes there and back (G53's axes not given, G54-G59.3)."""
     p = [prog[i] + st.g92[i] for i in range(AXES)]
     if st.rotation:
         p[0], p[1] = rotate(p[0], p[1], st.rotation)
     t = st.tlo if tlo else _NO_TLO
-    return [p[i] + st.g5x[i] + t[i] for i in range(AXES)]
+    return [p[i] + st.g5x[i] + (t[i] if i < 3 or rotary else 0.0) for i in range(AXES)]
 
 
 def to_program(st: State, machine: Vec, tlo: Sequence[float] | None = None) -> Vec:
     """Machine coordinates -> program coordinates (``tlo``: with that tool length offset instead
     of the one in effect).  rs274 takes the tool length offset off X Y Z only (the rotary axes'
-    offset counts the other way, in :func:`to_machine`, not here)."""
+    offset counts only in :func:`to_machine` with ``rotary``)."""
     t = st.tlo if tlo is None else tlo
     p = [machine[i] - st.g5x[i] - (t[i] if i < 3 else 0.0) for i in range(AXES)]
     # Rotated even by 0 degrees: rs274 does, which decides the sign of a zero (G53 X-0).

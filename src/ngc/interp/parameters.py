@@ -46,7 +46,7 @@ def _pos(axis: int) -> Getter:
 
 
 def _machine(s: State, axis: int) -> float:
-    return to_machine(s, s.pos)[axis]
+    return to_machine(s, s.pos, rotary=True)[axis]
 
 
 # Predefined read-only named parameters (overview.adoc, "Predefined Named Parameters").
@@ -101,7 +101,7 @@ PREDEFINED: dict[str, Getter] = {
     "_current_tool": lambda s: float(s.tools.spindle.number),
     "_current_pocket": lambda s: float(s.tools.pocket(s.tool_index)),
     "_selected_tool": lambda s: float(s.selected_tool),
-    "_selected_pocket": lambda s: float(s.tools.pocket(s.selected_index)),
+    "_selected_pocket": lambda s: float(s.tools.pocket(s.selected_index) or -1),  # P0: -1
     "_value": lambda s: s.value,
     "_value_returned": lambda s: s.value_returned,
     "_task": lambda s: 0.0,
@@ -188,8 +188,9 @@ class Parameters:
 
 def tool_parameter(entry: ToolEntry, k: int) -> float:
     """#5400+k of the tool in the spindle: number, offsets X..W, diameter, front angle, back
-    angle, orientation (inches, as the table holds them)."""
-    if k == 0:
+    angle, orientation (inches, as the table holds them); all 0 for tool 0, even when the
+    table gives tool 0 data (a line ``T0`` without P)."""
+    if k == 0 or entry.number == 0:
         return float(entry.number)
     if k <= 9:
         return entry.offsets[k - 1]

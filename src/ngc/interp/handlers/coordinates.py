@@ -61,7 +61,7 @@ def emit_rotation(it: Machine) -> None:
 
 
 def _keep_machine_position(it: Machine) -> Vec:
-    return to_machine(it.state, it.state.pos)
+    return to_machine(it.state, it.state.pos, rotary=True)
 
 
 # -- coordinate system selection ----------------------------------------------------------------
@@ -96,10 +96,12 @@ def select_system(it: Machine, code: int) -> None:
     if index == st.coord_index:
         it.emit(ops.Comment("interpreter: continuing to use same coordinate system"))
         return
-    machine = _keep_machine_position(it)
+    machine = to_machine(st, st.pos)
+    tools.hold_canon(st)
     load_system(it, index)
     it.params.numbered[5220] = float(index)
     st.pos = to_program(st, machine)
+    tools.held(st)
     emit_g5x(it)
     emit_g92(it)
     emit_rotation(it)
@@ -139,11 +141,13 @@ def g10(it: Machine, r: Resolved) -> None:
     x, y = rotate(st.pos[0], st.pos[1], st.rotation) if st.rotation else (st.pos[0], st.pos[1])
     point = [x, y, *st.pos[2:]]
     old = st.g5x
+    tools.hold_canon(st)
     load_system(it, index)
     point = [point[i] + old[i] - st.g5x[i] for i in range(AXES)]
     if st.rotation:
         point[0], point[1] = rotate(point[0], point[1], -st.rotation)
     st.pos = point
+    tools.held(st)
     emit_g5x(it)
     emit_rotation(it)
 

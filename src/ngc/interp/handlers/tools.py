@@ -7,8 +7,9 @@ print a slot, not a tool number.  Tool data are in inches; the tool length offse
 (``state.tlo``) is in program units, as ``USE_TOOL_LENGTH_OFFSET`` prints it.
 
 A change of the tool length offset keeps the machine still: the current point, in program
-coordinates, moves by the change.  The canon does not follow that, and M6 and M61 take the
-canon's current point back (``state.canon_pos``), as rs274 does.
+coordinates, moves by the change.  The canon does not follow that (nor a rotation change), and
+M6 and M61 take the canon's current point back (``state.canon_pos``, :func:`hold_canon`), as
+rs274 does.
 """
 
 from __future__ import annotations
@@ -16,12 +17,12 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ...canon import ops
-from ...config.tooltable import ToolEntry
+from ...config.tooltable import ToolEntry, length_from_program, length_to_program
 from ...errors import NgcSemanticError
 from ...language.codes import AXIS_LETTERS
-from ..frames import Vec, rotate, to_machine, to_program
+from ..frames import rotate, to_machine
 from ..parameters import COORD_STRIDE, G54_ORIGIN
-from ..state import AXES, LINEAR
+from ..state import AXES, LINEAR, MM_PER_INCH
 
 if TYPE_CHECKING:
     from ...language.words import Words
@@ -38,8 +39,8 @@ def _not_found(number: int) -> NgcSemanticError:
 
 
 def _to_program_units(st: State, offsets: tuple[float, ...]) -> list[float]:
-    k = st.units_factor
-    return [v * k if _LINEAR9[i] else v for i, v in enumerate(offsets)]
+    metric = st.metric
+    return [length_to_program(v, metric) if _LINEAR9[i] else v for i, v in enumerate(offsets)]
 
 
 def _lookup(it: Machine, number: int) -> ToolEntry:
@@ -87,8 +88,7 @@ def change_tool(it: Machine) -> None:
     st.spindle = 0  # the spindle stops for the change
     it.emit(ops.StopSpindleTurning(0))
     it.emit(ops.ChangeTool(index))
-    if index > 0:
-        st.tools.slots[0] = st.tools.slots[index]
+    st.tools.load(index)
     st.tool_index = index
     st.tool_changed = True
 
@@ -114,11 +114,41 @@ def _round(value: float) -> float:
 
 
 def canon_position(st: State) -> None:
-    """At the end of a line with M6 or M61 rs274 takes the canon's current point as its own."""
+    """At the end of a line with M6 or M61 rs274 takes the canon's current point as its own,
+    and the spindle's entry as the canon has it."""
     st.tool_changed = False
+    st.tools.reload()
     if st.canon_pos is not None and st.canon_anchor is st.pos:
-        st.pos = st.canon_pos
+        metric = st.metric
+        st.pos = [_from_mm(v, i, metric) - st.g5x[i] - st.g92[i] for i, v in enumerate(st.canon_pos)]
     st.canon_pos = st.canon_anchor = None
+
+
+def hold_canon(st: State) -> None:
+    """Before the current point changes without a move (a tool length offset or rotation
+    change): remember where the canon's point is, unless that is already known.
+
+    The canon keeps the last move's end point, in program coordinates: it follows a change of
+    the G5x origin or of the G92/G52 offset (by the change along each axis, unrotated) and of
+    the units, not a rotation or tool length offset change.  It is kept here as the sum of the
+    point and those offsets, in millimetres, which none of those changes alter; the ``pos``
+    list it belongs to is ``canon_anchor`` (a move replaces ``pos``)."""
+    if st.canon_pos is None or st.canon_anchor is not st.pos:
+        metric = st.metric
+        st.canon_pos = [_to_mm(st.pos[i] + st.g5x[i] + st.g92[i], i, metric) for i in range(AXES)]
+
+
+def held(st: State) -> None:
+    """After such a change: the canon's point belongs to the new current point."""
+    st.canon_anchor = st.pos
+
+
+def _to_mm(value: float, axis: int, metric: bool) -> float:
+    return value if metric or not LINEAR[axis] else value * MM_PER_INCH
+
+
+def _from_mm(value: float, axis: int, metric: bool) -> float:
+    return value if metric or not LINEAR[axis] else value / MM_PER_INCH
 
 
 # -- tool length offsets ------------------------------------------------------------------------
@@ -162,15 +192,14 @@ def tool_length_off(it: Machine) -> None:
 def _apply(it: Machine, new: list[float]) -> None:
     """Put a tool length offset in effect: the current point moves by the change."""
     st = it.state
-    if st.canon_pos is None or st.canon_anchor is not st.pos:
-        st.canon_pos = list(st.pos)
+    hold_canon(st)
     old = st.tlo
     st.tlo = new
     delta = [old[i] - new[i] for i in range(AXES)]  # machine axes
     if st.rotation:
         delta[0], delta[1] = rotate(delta[0], delta[1], -st.rotation)
     st.pos = [st.pos[i] + delta[i] for i in range(AXES)]
-    st.canon_anchor = st.pos
+    held(st)
     it.emit(ops.UseToolLengthOffset(*new))
 
 
@@ -204,21 +233,21 @@ def g10_tools(it: Machine, r: Words, l_word: int) -> None:
             raise NgcSemanticError("Invalid tool orientation")
         orientation = int(_round(q))
     offsets = list(entry.offsets)
-    k = st.units_factor
+    metric = st.metric
     if l_word == 1:
         values = {i: v for i, v in axes}
     else:
         values = _measured(it, dict(axes), l_word, entry)
     for i, v in values.items():
-        offsets[i] = v / k if LINEAR[i] else v
-    diameter = 2.0 * w["r"] / k if "r" in w else entry.diameter
+        offsets[i] = length_from_program(v, metric) if LINEAR[i] else v
+    diameter = length_from_program(2.0 * w["r"], metric) if "r" in w else entry.diameter
     entry = entry._replace(offsets=tuple(offsets), diameter=diameter,
                            frontangle=w.get("i", entry.frontangle),
                            backangle=w.get("j", entry.backangle), orientation=orientation)
     tools.slots[index] = entry
     _emit_entry(it, index, entry)
     if index == st.tool_index:
-        tools.slots[0] = entry
+        tools.slots[0] = entry  # with its pocket (the canon's copy keeps its own)
         _emit_entry(it, 0, entry)
 
 
@@ -231,26 +260,44 @@ def _emit_entry(it: Machine, index: int, e: ToolEntry) -> None:
 def _measured(
     it: Machine, given: dict[int, float], l_word: int, entry: ToolEntry
 ) -> dict[int, float]:
-    """L10 / L11: the offsets (program units) that make the current point read ``given``.
+    """L10 / L11: the offsets (program units) that make the current point read ``given``: L10 in
+    the current coordinate system, L11 in G59.3 (its origin and rotation, without G52/G92).
 
-    L10: an axis not given keeps the coordinate the current point would have with the tool's
-    entry as the offset (with a rotation, a given X or Y sets both)."""
+    An axis not given keeps the coordinate the current point would have with the tool's entry
+    as the offset (with a rotation, a given X or Y sets both)."""
     st = it.state
-    machine = to_machine(st, st.pos)
+    tool = _to_program_units(st, entry.offsets)
+    changed = set(given)
     if l_word == 10:
-        point = to_program(st, machine, _to_program_units(st, entry.offsets))
-        for i, v in given.items():
-            point[i] = v
-        base = to_machine(st, point, tlo=False)
-        changed = set(given)
-        if st.rotation and changed & {0, 1}:
-            changed |= {0, 1}  # a rotated X or Y moves the offset along both
-        return {i: machine[i] - base[i] for i in changed}
-    origin_base = G54_ORIGIN + COORD_STRIDE * (_G59_3 - 1)
+        # The point with the entry's offset in effect (as G43 would move it), and the offset
+        # that moves it to the given coordinates: rs274's arithmetic, to the last bit.
+        delta = [st.tlo[i] - tool[i] for i in range(AXES)]
+        if st.rotation:
+            delta[0], delta[1] = rotate(delta[0], delta[1], -st.rotation)
+        point = [st.pos[i] + delta[i] for i in range(AXES)]
+        diff = [point[i] - given.get(i, point[i]) for i in range(AXES)]
+        if st.rotation:
+            diff[0], diff[1] = rotate(diff[0], diff[1], st.rotation)
+            if changed & {0, 1}:
+                changed |= {0, 1}  # a rotated X or Y moves the offset along both
+        return {i: tool[i] + diff[i] for i in changed}
+    machine = to_machine(st, st.pos, rotary=True)
+    base = G54_ORIGIN + COORD_STRIDE * (_G59_3 - 1)
     numbered = it.params.numbered
     k = st.units_factor
-    origin: Vec = [numbered[origin_base + i] * (k if LINEAR[i] else 1.0) for i in range(AXES)]
-    return {i: machine[i] - origin[i] - v for i, v in given.items()}
+    origin = [numbered[base + i] * (k if LINEAR[i] else 1.0) for i in range(AXES)]
+    rotation = numbered[base + 9]
+    # The point in G59.3, with the entry's offset.
+    point = [machine[i] - origin[i] - (tool[i] if i < 3 else 0.0) for i in range(AXES)]
+    point[0], point[1] = rotate(point[0], point[1], -rotation)
+    for i, v in given.items():
+        point[i] = v
+    # Back to the machine, without a tool length offset.
+    if rotation:
+        point[0], point[1] = rotate(point[0], point[1], rotation)
+    if rotation and changed & {0, 1}:
+        changed |= {0, 1}  # a rotated X or Y moves the offset along both
+    return {i: machine[i] - (point[i] + origin[i]) for i in changed}
 
 
 # -- G7 / G8 ------------------------------------------------------------------------------------
