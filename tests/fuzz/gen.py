@@ -999,6 +999,13 @@ TOOLS: list[tuple[float, Callable[[Gen], None]]] = [
     (5, st_g10_tool),
     (6, st_tool_params),
     (2.5, st_lathe_diameter),
+    # the offsets tool lengths combine with
+    (2, st_g10),
+    (1.5, st_coord_system),
+    (2, st_g52_g92),
+    (1.5, st_home),
+    (1.5, st_g53),
+    (2, st_read_params),
 ]
 
 
