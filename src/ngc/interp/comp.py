@@ -82,6 +82,18 @@ _sin = math.sin
 _hypot = math.hypot
 
 
+# The standalone canon's external length units (its inches per millimetre), by which rs274
+# brings a tool table's diameter (inches) into millimetres: a little off 25.4, which shows in the
+# last digit of some compensated points.
+INCH_PER_MM = 0.03937007874016
+
+
+def table_diameter(diameter: float, metric: bool) -> float:
+    """A tool table's diameter (inches) in program units, as rs274 converts it."""
+    mm = diameter / INCH_PER_MM
+    return mm if metric else mm / 25.4
+
+
 class Compensation:
     """Compensation on (``side`` 1 left, -1 right) or just turned off (``side`` 0: the exit move
     is next)."""
@@ -377,13 +389,12 @@ def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: f
     if c.kind == LINE:
         ua, ub = _cos(before), _sin(before)
         if kind == LINE:
-            # the corner takes back r tan(turn / 2) of the held line, which must be that long
-            if c.radius * math.tan(abs(turn) / 2) > _hypot(c.ca - c.sa, c.cb - c.sb):
+            # the corner takes back r tan(turn / 2) of the held line, which must be that long;
+            # rs274 steps back along the held line by that much
+            back = c.radius * math.tan(abs(turn) / 2)
+            if back > _hypot(c.ca - c.sa, c.cb - c.sb):
                 _gouge(c)
-            va, vb = _cos(tangent), _sin(tangent)
-            den = ua * vb - ub * va
-            s = ((sa - c.ca) * vb - (sb - c.cb) * va) / den
-            return c.ca + s * ua, c.cb + s * ub
+            return c.ca - back * ua, c.cb - back * ub
         found = _line_circle(c.ca + la, c.cb + lb, ua, ub, k1, k2, kr)
         return None if found is None else _first_on_arc(k1, k2, sa, sb, rot, found)
     if kind == LINE:

@@ -62,7 +62,8 @@ def from_table(it: Machine, r: Resolved, code: int) -> None:
         raise NgcSemanticError(f"Requested tool {number} not found in the tool table")
     if entry.orientation not in (0, 9) and st.plane != 180:
         raise NgcSemanticError(f"{name} with lathe tool, but plane is not G18")
-    start(it, 1 if code == 410 else -1, entry.diameter * st.units_factor, entry.orientation)
+    start(it, 1 if code == 410 else -1, comp.table_diameter(entry.diameter, st.metric),
+          entry.orientation)
 
 
 # How far from a whole number a G41 / G42 D word may be.
