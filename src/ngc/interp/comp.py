@@ -82,6 +82,7 @@ _sin = math.sin
 _hypot = math.hypot
 
 
+
 class Compensation:
     """Compensation on (``side`` 1 left, -1 right) or just turned off (``side`` 0: the exit move
     is next)."""
@@ -223,7 +224,8 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     t = _atan2(eb - pb, ea - pa)
     n = t + HALF_PI if side > 0 else t - HALF_PI
     dx, dy = r * _cos(n), r * _sin(n)
-    _corner(m, c, t, pa + dx, pb + dy, LINE, 0.0, 0.0, 0.0, 0, op_type is ops.StraightTraverse)
+    _corner(m, c, t, pa + dx, pb + dy, LINE, 0.0, 0.0, 0.0, 0, op_type is ops.StraightTraverse,
+            0.0, 0.0)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
     st = m.state
@@ -300,7 +302,11 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     sa = pa + sign * r * ((pa - c1) / big)
     sb = pb + sign * r * ((pb - c2) / big)
     tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
-    _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation, False)
+    # rs274 meets a held line at the arc's start angle but the end's radius: the line moves
+    # along the start's radius by the difference
+    lift = (big_end - big) / big
+    _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation, False,
+            lift * (pa - c1), lift * (pb - c2))
     c.sa, c.sb = c.ca, c.cb
     c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
     c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
@@ -325,7 +331,8 @@ def _arc_fields(c: Compensation, end: list[float], ea: float, eb: float, k1: flo
 
 # -- corners --------------------------------------------------------------------------------------
 def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, kind: int,
-            k1: float, k2: float, kr: float, rot: int, traverse: bool) -> None:
+            k1: float, k2: float, kr: float, rot: int, traverse: bool, la: float,
+            lb: float) -> None:
     """Join the held move to the next one, which starts (offset) at ``sa, sb`` with direction
     ``tangent`` (a line, or an arc of center ``k1, k2``, compensated radius ``kr`` and
     direction ``rot``).  Before a traverse, the corner is a traverse too."""
@@ -341,7 +348,7 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
     side = c.side
     crossing = None
     if turn * side > 0:
-        crossing = _crossing(c, before, tangent, turn, sa, sb, kind, k1, k2, kr, rot)
+        crossing = _crossing(c, before, tangent, turn, sa, sb, kind, k1, k2, kr, rot, la, lb)
     if crossing is None:  # outside (or a line and an arc that never meet): an arc around the corner
         _check_held(c)
         flush(m)
@@ -363,22 +370,21 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
 
 
 def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: float, sb: float,
-              kind: int, k1: float, k2: float, kr: float,
-              rot: int) -> tuple[float, float] | None:
+              kind: int, k1: float, k2: float, kr: float, rot: int, la: float,
+              lb: float) -> tuple[float, float] | None:
     """Inside: where the two compensated paths cross (an arc's crossing is the first met going
     back along the held arc from its end, or on along the next arc from its start); None for a
     line and an arc that never meet."""
     if c.kind == LINE:
         ua, ub = _cos(before), _sin(before)
         if kind == LINE:
-            # the corner takes back r tan(turn / 2) of the held line, which must be that long
-            if c.radius * math.tan(abs(turn) / 2) > _hypot(c.ca - c.sa, c.cb - c.sb):
+            # the corner takes back r tan(turn / 2) of the held line, which must be that long;
+            # rs274 steps back along the held line by that much
+            back = c.radius * math.tan(abs(turn) / 2)
+            if back > _hypot(c.ca - c.sa, c.cb - c.sb):
                 _gouge(c)
-            va, vb = _cos(tangent), _sin(tangent)
-            den = ua * vb - ub * va
-            s = ((sa - c.ca) * vb - (sb - c.cb) * va) / den
-            return c.ca + s * ua, c.cb + s * ub
-        found = _line_circle(c.ca, c.cb, ua, ub, k1, k2, kr)
+            return c.ca - back * ua, c.cb - back * ub
+        found = _line_circle(c.ca + la, c.cb + lb, ua, ub, k1, k2, kr)
         return None if found is None else _first_on_arc(k1, k2, sa, sb, rot, found)
     if kind == LINE:
         va, vb = _cos(tangent), _sin(tangent)
