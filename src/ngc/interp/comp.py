@@ -53,6 +53,8 @@ class Machine(Protocol):
     def emit(self, op: Op) -> None: ...
 
 SMALL = 0.05  # radians: a corner closer to straight than this is neither trimmed nor rounded
+ARC_SLACK_MM = 0.0254  # see Compensation.slack
+REVERSAL = math.pi - SMALL  # a turn beyond this is a reversal: the curvatures decide its side
 HALF_PI = math.pi / 2
 TWO_PI = 2 * math.pi
 
@@ -110,11 +112,13 @@ class Compensation:
         "shift_a",
         "shift_b",
         "side",
+        "slack",
         "start",
+        "sweep",
     )
 
     def __init__(self, side: int, radius: float, plane: int, pos: list[float],
-                 orientation: int = 0) -> None:
+                 orientation: int = 0, metric: bool = True) -> None:
         self.side = side
         self.radius = radius
         self.a, self.b, self.h = PLANE_AXES.get(plane, (0, 1, 2))
@@ -138,6 +142,11 @@ class Compensation:
         self.rot = 0
         self.pa = self.pb = 0.0
         self.start = pos  # the point the held move starts from (out of the plane)
+        # the held arc's sweep (radians) before a corner moved its start or end (0.0: none did),
+        # and how much further it may then turn: rs274 allows 0.001 inch in program units, taken
+        # as an angle (0.001 in G20, 0.0254 in G21)
+        self.sweep = 0.0
+        self.slack = ARC_SLACK_MM if metric else ARC_SLACK_MM / 25.4
 
     @classmethod
     def exit(cls, plane: int, pos: list[float]) -> Compensation:
@@ -286,6 +295,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
         c.first = False
         c.sa, c.sb = ca, cb
         c.ka, c.kb, c.kr, c.rot = k1, k2, abs(rr - k), rotation
+        c.sweep = 0.0
         # the corner after it turns from the programmed circle's direction (the moved center
         # may have crossed the end)
         c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
@@ -301,6 +311,9 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     sb = pb + sign * r * ((pb - c2) / big)
     tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
     _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation, False)
+    # the corner moved the start (on, inside; or the held move ends a little off the circle):
+    # the arc must not turn further when it goes out
+    c.sweep = _sweep(c1, c2, sa, sb, ra, rb, rotation) if (c.ca != sa or c.cb != sb) else 0.0
     c.sa, c.sb = c.ca, c.cb
     c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
     c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
@@ -336,14 +349,17 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
     while turn < -math.pi:  # a reversal keeps its sign
         turn += TWO_PI
     if -SMALL <= turn <= SMALL or c.radius == 0.0:  # a tool of no radius turns on the spot
-        _check_held(c)
+        check_held(c)
         return
     side = c.side
     crossing = None
-    if turn * side > 0:
+    inside = turn * side > 0
+    if turn > REVERSAL or turn < -REVERSAL:
+        inside = _bends_inside(c, before, kind, k1, k2)
+    if inside:
         crossing = _crossing(c, before, tangent, turn, sa, sb, kind, k1, k2, kr, rot)
-    if crossing is None:  # outside (or a line and an arc that never meet): an arc around the corner
-        _check_held(c)
+    if crossing is None:  # outside: an arc around the corner
+        check_held(c)
         flush(m)
         pos = m.state.pos
         if traverse:
@@ -359,15 +375,15 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
         c.ca, c.cb = sa, sb
         return
     _move_held_end(m, c, *crossing)
-    _check_held(c)
+    check_held(c)
 
 
 def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: float, sb: float,
               kind: int, k1: float, k2: float, kr: float,
               rot: int) -> tuple[float, float] | None:
     """Inside: where the two compensated paths cross (an arc's crossing is the first met going
-    back along the held arc from its end, or on along the next arc from its start); None for a
-    line and an arc that never meet."""
+    back along the held arc from its end, or on along the next arc from its start); paths that
+    never meet cannot be cut without gouging."""
     if c.kind == LINE:
         ua, ub = _cos(before), _sin(before)
         if kind == LINE:
@@ -379,11 +395,17 @@ def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: f
             s = ((sa - c.ca) * vb - (sb - c.cb) * va) / den
             return c.ca + s * ua, c.cb + s * ub
         found = _line_circle(c.ca, c.cb, ua, ub, k1, k2, kr)
-        return None if found is None else _first_on_arc(k1, k2, sa, sb, rot, found)
+        if found is None:
+            _arc_gouge()
+        return _first_on_arc(k1, k2, sa, sb, rot, found)
     if kind == LINE:
         va, vb = _cos(tangent), _sin(tangent)
         found = _line_circle(sa, sb, va, vb, c.ka, c.kb, c.kr)
-        return None if found is None else _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, found)
+        if found is None:
+            raise NgcSemanticError(
+                "Arc to straight motion makes a corner the compensated tool can't fit in without "
+                "gouging")
+        return _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, found)
     points = _circle_circle(c.ka, c.kb, c.kr, k1, k2, kr)
     if points is None:
         raise NgcSemanticError(
@@ -436,11 +458,39 @@ def _first_on_arc(k1: float, k2: float, pa: float, pb: float, rot: int,
     return best
 
 
+def _bends_inside(c: Compensation, before: float, kind: int, k1: float, k2: float) -> bool:
+    """At a reversal the next move is on the compensated side of the held one when it bends
+    further toward that side (curvatures, signed toward the side, at the programmed corner)."""
+    side = c.side
+    na, nb = -side * _sin(before), side * _cos(before)
+    pa, pb = c.prog[c.a], c.prog[c.b]
+    held = 0.0
+    if c.kind == ARC:
+        da, db = c.ka - pa, c.kb - pb
+        held = (da * na + db * nb) / (da * da + db * db)
+    nxt = 0.0
+    if kind == ARC:
+        da, db = k1 - pa, k2 - pb
+        nxt = (da * na + db * nb) / (da * da + db * db)
+    return nxt > held
+
+
+def _sweep(k1: float, k2: float, sa: float, sb: float, ea: float, eb: float,
+           rot: int) -> float:
+    """The angle an arc of center ``k1, k2`` turns from ``s`` to ``e`` in its direction (a
+    whole turn when they meet)."""
+    turn = (_atan2(eb - k2, ea - k1) - _atan2(sb - k2, sa - k1)) * (1 if rot > 0 else -1)
+    turn %= TWO_PI
+    return turn if turn > 0.0 else TWO_PI
+
+
 def _move_held_end(m: Machine, c: Compensation, xa: float, xb: float) -> None:
     """The held move (and the moves out of the plane queued behind it) now end at ``xa, xb``."""
     oa, ob = xa + c.shift_a, xb + c.shift_b
     item = c.item
     if c.kind == ARC:
+        if c.sweep == 0.0:
+            c.sweep = _sweep(c.ka, c.kb, c.sa, c.sb, c.ca, c.cb, c.rot)
         item[1][0] = oa
         item[1][1] = ob
     else:
@@ -453,12 +503,23 @@ def _move_held_end(m: Machine, c: Compensation, xa: float, xb: float) -> None:
     c.ca, c.cb = xa, xb
 
 
-def _check_held(c: Compensation) -> None:
-    """A held straight move that would now run backwards cannot be cut without gouging."""
-    if c.kind != LINE:
-        return
-    if (c.ca - c.sa) * _cos(c.pdir) + (c.cb - c.sb) * _sin(c.pdir) < 0:
-        _gouge(c)
+def check_held(c: Compensation) -> None:
+    """A held move that would now run backwards (a line), or turn further than it did before its
+    corners trimmed it (an arc), cannot be cut without gouging."""
+    if c.kind == LINE:
+        if (c.ca - c.sa) * _cos(c.pdir) + (c.cb - c.sb) * _sin(c.pdir) < 0:
+            _gouge(c)
+    elif c.sweep != 0.0:
+        if (c.sa != c.ca or c.sb != c.cb) and (
+                _sweep(c.ka, c.kb, c.sa, c.sb, c.ca, c.cb, c.rot) > c.sweep + c.slack):
+            _arc_gouge()
+        c.sweep = 0.0
+
+
+
+def _arc_gouge() -> NoReturn:
+    raise NgcSemanticError(
+        "Arc move in concave corner cannot be reached by the tool without gouging")
 
 
 def _gouge(c: Compensation) -> NoReturn:
@@ -503,6 +564,7 @@ def convert(m: Machine, k: float) -> None:
                 fields[i] *= k
     c.prog = [v * k if i < 3 else v for i, v in enumerate(c.prog)]
     c.radius *= k
+    c.slack *= k
     c.shift_a *= k
     c.shift_b *= k
     c.ca *= k

@@ -82,7 +82,8 @@ def start(it: Machine, side: int, diameter: float, orientation: int) -> None:
     if diameter < 0.0:
         side = -side
     st = it.state
-    it.comp = Compensation(side, abs(diameter) / 2.0, st.plane, st.pos, orientation)
+    it.comp = Compensation(side, abs(diameter) / 2.0, st.plane, st.pos, orientation,
+                           st.metric)
     st.ccomp = 410 if side > 0 else 420
     it.emit(ops.Comment(_ON[side]))
 
@@ -91,6 +92,7 @@ def stop(it: Machine) -> None:
     """G40: the held moves go out; the next move (straight) leaves the compensated path."""
     st = it.state
     if is_on(it):
+        comp.check_held(it.comp)  # type: ignore[arg-type]
         comp.flush(it)
         it.comp = Compensation.exit(st.plane, it.comp.prog)  # type: ignore[union-attr]
     st.ccomp = 400
@@ -99,6 +101,8 @@ def stop(it: Machine) -> None:
 
 def end(it: Machine) -> None:
     """M2 / M30: what is held goes out; compensation ends without a word."""
+    if is_on(it):
+        comp.check_held(it.comp)  # type: ignore[arg-type]
     comp.flush(it)
     if it.comp is not None:
         it.comp = None
