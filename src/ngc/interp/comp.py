@@ -176,6 +176,8 @@ def _hold(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[fl
     c.item = item
     c.kind = kind
     c.ptype = op_type
+    if c.radius == 0.0:  # a tool of no radius holds nothing back
+        flush(m)
 
 
 def _out(c: Compensation, m: Machine, end: list[float], na: float, nb: float) -> list[float]:
@@ -206,7 +208,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     r = c.radius
     if c.first:
         ca, cb = c.ca, c.cb
-        if _hypot(ea - ca, eb - cb) <= r:
+        if _hypot(ea - ca, eb - cb) <= r and r > 0.0:  # a tool of no radius may stay put
             raise NgcSemanticError(
                 "Length of cutter compensation entry move is not greater than the tool radius")
         t = _atan2(eb - cb, ea - ca)
@@ -226,6 +228,8 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         out[a] = c.ca + c.shift_a
         out[b] = c.cb + c.shift_b
         m.held.append([op_type, out])
+        if r == 0.0:
+            flush(m)
         m.state.pos = out
         c.prog = end
         return
@@ -254,6 +258,8 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     c.kind = LINE
     c.ptype = op_type
     c.prog = end
+    if r == 0.0:
+        flush(m)
 
 
 # -- arcs -----------------------------------------------------------------------------------------

@@ -89,12 +89,15 @@ def start(it: Machine, side: int, diameter: float, orientation: int) -> None:
 
 
 def stop(it: Machine) -> None:
-    """G40: the held moves go out; the next move (straight) leaves the compensated path."""
+    """G40: the held moves go out; the next move (straight) leaves the compensated path (with a
+    tool of no radius, compensation just ends)."""
     st = it.state
-    if is_on(it):
-        comp.check_held(it.comp)  # type: ignore[arg-type]
+    c = it.comp
+    if c is not None and c.side != 0:
+        comp.check_held(c)
         comp.flush(it)
-        it.comp = Compensation.exit(st.plane, it.comp.prog)  # type: ignore[union-attr]
+        # a tool of no radius leaves no exit move: the next move may be an arc
+        it.comp = None if c.radius == 0.0 else Compensation.exit(st.plane, c.prog)
     st.ccomp = 400
     it.emit(_OFF)
 
