@@ -148,9 +148,30 @@ class Compensation:
         self.sweep = 0.0
         self.slack = ARC_SLACK_MM if metric else ARC_SLACK_MM / 25.4
 
-    @classmethod
-    def exit(cls, plane: int, pos: list[float]) -> Compensation:
-        return cls(0, 0.0, plane, pos)
+    @staticmethod
+    def exit(plane: int, state: State, pos: list[float]) -> Compensation:
+        """Just turned off at the compensated point ``pos``: the current point is the programmed
+        one again (what G92, tool length offsets and #5420-#5428 then see); only the exit move
+        remains."""
+        return _Exit(plane, state, pos)
+
+
+class _Exit(Compensation):
+    """Compensation just turned off: the programmed point is the state's current point."""
+
+    __slots__ = ("state",)
+
+    def __init__(self, plane: int, state: State, pos: list[float]) -> None:
+        super().__init__(0, 0.0, plane, pos)  # ca, cb: the compensated point, the canon's
+        self.state = state
+
+    @property
+    def prog(self) -> list[float]:
+        return self.state.pos
+
+    @prog.setter
+    def prog(self, value: list[float]) -> None:
+        pass  # the state's point is the programmed one (units convert it already)
 
 
 # -- the queue ------------------------------------------------------------------------------------
@@ -540,7 +561,13 @@ def take_canon_point(m: Machine) -> None:
     held, where the held move starts.  The held move now ends there; the corner after it turns
     from the direction the programmed point's offset to that point gives."""
     c: Compensation = m.comp  # type: ignore[assignment]
-    if c.kind == 0 or c.side == 0:
+    if c.side == 0:  # turned off: the canon is still at the compensated point
+        pos = m.state.pos.copy()
+        pos[c.a] = c.ca
+        pos[c.b] = c.cb
+        m.state.pos = pos
+        return
+    if c.kind == 0:
         return
     a, b = c.a, c.b
     pos = c.start.copy()

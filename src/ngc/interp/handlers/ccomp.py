@@ -96,8 +96,10 @@ def stop(it: Machine) -> None:
     if c is not None and c.side != 0:
         comp.check_held(c)
         comp.flush(it)
+        pos = st.pos
+        st.pos = c.prog.copy()  # the current point is the programmed one again
         # a tool of no radius leaves no exit move: the next move may be an arc
-        it.comp = None if c.radius == 0.0 else Compensation.exit(st.plane, c.prog)
+        it.comp = None if c.radius == 0.0 else Compensation.exit(st.plane, st, pos)
     st.ccomp = 400
     it.emit(_OFF)
 
