@@ -29,8 +29,6 @@ KNOWN: dict[str, str] = {
 # Cases recorded ahead of the code they need, by name prefix: expected to fail until it is in;
 # not strict, so a case passes as soon as its code is there. Remove a prefix once all its cases pass.
 PENDING: dict[str, str] = {
-    "ccomp-arc-arc-cusp": "cutter radius compensation: not matched yet",
-    "ccomp-err-concave-line-arc": "cutter radius compensation: not matched yet",
     "ccomp-g42.1-entry-arc-g2": "cutter radius compensation: not matched yet",
     "ccomp-g42.1-square-ccw-outside": "cutter radius compensation: not matched yet",
     "ccomp-params-5422-in-debug-before-entry": "cutter radius compensation: not matched yet",

@@ -53,6 +53,8 @@ class Machine(Protocol):
     def emit(self, op: Op) -> None: ...
 
 SMALL = 0.05  # radians: a corner closer to straight than this is neither trimmed nor rounded
+ARC_SLACK_MM = 0.0254  # see Compensation.slack
+REVERSAL = math.pi - SMALL  # a turn beyond this is a reversal: the curvatures decide its side
 HALF_PI = math.pi / 2
 TWO_PI = 2 * math.pi
 
@@ -111,11 +113,13 @@ class Compensation:
         "shift_a",
         "shift_b",
         "side",
+        "slack",
         "start",
+        "sweep",
     )
 
     def __init__(self, side: int, radius: float, plane: int, pos: list[float],
-                 orientation: int = 0) -> None:
+                 orientation: int = 0, metric: bool = True) -> None:
         self.side = side
         self.radius = radius
         self.a, self.b, self.h = PLANE_AXES.get(plane, (0, 1, 2))
@@ -139,10 +143,36 @@ class Compensation:
         self.rot = 0
         self.pa = self.pb = 0.0
         self.start = pos  # the point the held move starts from (out of the plane)
+        # the held arc's sweep (radians) before a corner moved its start or end (0.0: none did),
+        # and how much further it may then turn: rs274 allows 0.001 inch in program units, taken
+        # as an angle (0.001 in G20, 0.0254 in G21)
+        self.sweep = 0.0
+        self.slack = ARC_SLACK_MM if metric else ARC_SLACK_MM / 25.4
 
-    @classmethod
-    def exit(cls, plane: int, pos: list[float]) -> Compensation:
-        return cls(0, 0.0, plane, pos)
+    @staticmethod
+    def exit(plane: int, state: State, pos: list[float]) -> Compensation:
+        """Just turned off at the compensated point ``pos``: the current point is the programmed
+        one again (what G92, tool length offsets and #5420-#5428 then see); only the exit move
+        remains."""
+        return _Exit(plane, state, pos)
+
+
+class _Exit(Compensation):
+    """Compensation just turned off: the programmed point is the state's current point."""
+
+    __slots__ = ("state",)
+
+    def __init__(self, plane: int, state: State, pos: list[float]) -> None:
+        super().__init__(0, 0.0, plane, pos)  # ca, cb: the compensated point, the canon's
+        self.state = state
+
+    @property
+    def prog(self) -> list[float]:
+        return self.state.pos
+
+    @prog.setter
+    def prog(self, value: list[float]) -> None:
+        pass  # the state's point is the programmed one (units convert it already)
 
 
 # -- the queue ------------------------------------------------------------------------------------
@@ -168,6 +198,8 @@ def _hold(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[fl
     c.item = item
     c.kind = kind
     c.ptype = op_type
+    if c.radius == 0.0:  # a tool of no radius holds nothing back
+        flush(m)
 
 
 def _out(c: Compensation, m: Machine, end: list[float], na: float, nb: float) -> list[float]:
@@ -198,7 +230,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     r = c.radius
     if c.first:
         ca, cb = c.ca, c.cb
-        if _hypot(ea - ca, eb - cb) <= r:
+        if _hypot(ea - ca, eb - cb) <= r and r > 0.0:  # a tool of no radius may stay put
             raise NgcSemanticError(
                 "Length of cutter compensation entry move is not greater than the tool radius")
         t = _atan2(eb - cb, ea - ca)
@@ -218,6 +250,8 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         out[a] = c.ca + c.shift_a
         out[b] = c.cb + c.shift_b
         m.held.append([op_type, out])
+        if r == 0.0:
+            flush(m)
         m.state.pos = out
         c.prog = end
         return
@@ -247,6 +281,8 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     c.kind = LINE
     c.ptype = op_type
     c.prog = end
+    if r == 0.0:
+        flush(m)
 
 
 # -- arcs -----------------------------------------------------------------------------------------
@@ -288,6 +324,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
         c.first = False
         c.sa, c.sb = ca, cb
         c.ka, c.kb, c.kr, c.rot = k1, k2, abs(rr - k), rotation
+        c.sweep = 0.0
         # the corner after it turns from the programmed circle's direction (the moved center
         # may have crossed the end)
         c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
@@ -307,6 +344,9 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     lift = (big_end - big) / big
     _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation, False,
             lift * (pa - c1), lift * (pb - c2))
+    # the corner moved the start (on, inside; or the held move ends a little off the circle):
+    # the arc must not turn further when it goes out
+    c.sweep = _sweep(c1, c2, sa, sb, ra, rb, rotation) if (c.ca != sa or c.cb != sb) else 0.0
     c.sa, c.sb = c.ca, c.cb
     c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
     c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
@@ -343,14 +383,17 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
     while turn < -math.pi:  # a reversal keeps its sign
         turn += TWO_PI
     if -SMALL <= turn <= SMALL or c.radius == 0.0:  # a tool of no radius turns on the spot
-        _check_held(c)
+        check_held(c)
         return
     side = c.side
     crossing = None
-    if turn * side > 0:
+    inside = turn * side > 0
+    if turn > REVERSAL or turn < -REVERSAL:
+        inside = _bends_inside(c, before, kind, k1, k2)
+    if inside:
         crossing = _crossing(c, before, tangent, turn, sa, sb, kind, k1, k2, kr, rot, la, lb)
-    if crossing is None:  # outside (or a line and an arc that never meet): an arc around the corner
-        _check_held(c)
+    if crossing is None:  # outside: an arc around the corner
+        check_held(c)
         flush(m)
         pos = m.state.pos
         if traverse:
@@ -366,15 +409,15 @@ def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, k
         c.ca, c.cb = sa, sb
         return
     _move_held_end(m, c, *crossing)
-    _check_held(c)
+    check_held(c)
 
 
 def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: float, sb: float,
               kind: int, k1: float, k2: float, kr: float, rot: int, la: float,
               lb: float) -> tuple[float, float] | None:
     """Inside: where the two compensated paths cross (an arc's crossing is the first met going
-    back along the held arc from its end, or on along the next arc from its start); None for a
-    line and an arc that never meet."""
+    back along the held arc from its end, or on along the next arc from its start); paths that
+    never meet cannot be cut without gouging."""
     if c.kind == LINE:
         ua, ub = _cos(before), _sin(before)
         if kind == LINE:
@@ -385,11 +428,17 @@ def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: f
                 _gouge(c)
             return c.ca - back * ua, c.cb - back * ub
         found = _line_circle(c.ca + la, c.cb + lb, ua, ub, k1, k2, kr)
-        return None if found is None else _first_on_arc(k1, k2, sa, sb, rot, found)
+        if found is None:
+            _arc_gouge()
+        return _first_on_arc(k1, k2, sa, sb, rot, found)
     if kind == LINE:
         va, vb = _cos(tangent), _sin(tangent)
         found = _line_circle(sa, sb, va, vb, c.ka, c.kb, c.kr)
-        return None if found is None else _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, found)
+        if found is None:
+            raise NgcSemanticError(
+                "Arc to straight motion makes a corner the compensated tool can't fit in without "
+                "gouging")
+        return _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, found)
     points = _circle_circle(c.ka, c.kb, c.kr, k1, k2, kr)
     if points is None:
         raise NgcSemanticError(
@@ -442,11 +491,39 @@ def _first_on_arc(k1: float, k2: float, pa: float, pb: float, rot: int,
     return best
 
 
+def _bends_inside(c: Compensation, before: float, kind: int, k1: float, k2: float) -> bool:
+    """At a reversal the next move is on the compensated side of the held one when it bends
+    further toward that side (curvatures, signed toward the side, at the programmed corner)."""
+    side = c.side
+    na, nb = -side * _sin(before), side * _cos(before)
+    pa, pb = c.prog[c.a], c.prog[c.b]
+    held = 0.0
+    if c.kind == ARC:
+        da, db = c.ka - pa, c.kb - pb
+        held = (da * na + db * nb) / (da * da + db * db)
+    nxt = 0.0
+    if kind == ARC:
+        da, db = k1 - pa, k2 - pb
+        nxt = (da * na + db * nb) / (da * da + db * db)
+    return nxt > held
+
+
+def _sweep(k1: float, k2: float, sa: float, sb: float, ea: float, eb: float,
+           rot: int) -> float:
+    """The angle an arc of center ``k1, k2`` turns from ``s`` to ``e`` in its direction (a
+    whole turn when they meet)."""
+    turn = (_atan2(eb - k2, ea - k1) - _atan2(sb - k2, sa - k1)) * (1 if rot > 0 else -1)
+    turn %= TWO_PI
+    return turn if turn > 0.0 else TWO_PI
+
+
 def _move_held_end(m: Machine, c: Compensation, xa: float, xb: float) -> None:
     """The held move (and the moves out of the plane queued behind it) now end at ``xa, xb``."""
     oa, ob = xa + c.shift_a, xb + c.shift_b
     item = c.item
     if c.kind == ARC:
+        if c.sweep == 0.0:
+            c.sweep = _sweep(c.ka, c.kb, c.sa, c.sb, c.ca, c.cb, c.rot)
         item[1][0] = oa
         item[1][1] = ob
     else:
@@ -459,12 +536,23 @@ def _move_held_end(m: Machine, c: Compensation, xa: float, xb: float) -> None:
     c.ca, c.cb = xa, xb
 
 
-def _check_held(c: Compensation) -> None:
-    """A held straight move that would now run backwards cannot be cut without gouging."""
-    if c.kind != LINE:
-        return
-    if (c.ca - c.sa) * _cos(c.pdir) + (c.cb - c.sb) * _sin(c.pdir) < 0:
-        _gouge(c)
+def check_held(c: Compensation) -> None:
+    """A held move that would now run backwards (a line), or turn further than it did before its
+    corners trimmed it (an arc), cannot be cut without gouging."""
+    if c.kind == LINE:
+        if (c.ca - c.sa) * _cos(c.pdir) + (c.cb - c.sb) * _sin(c.pdir) < 0:
+            _gouge(c)
+    elif c.sweep != 0.0:
+        if (c.sa != c.ca or c.sb != c.cb) and (
+                _sweep(c.ka, c.kb, c.sa, c.sb, c.ca, c.cb, c.rot) > c.sweep + c.slack):
+            _arc_gouge()
+        c.sweep = 0.0
+
+
+
+def _arc_gouge() -> NoReturn:
+    raise NgcSemanticError(
+        "Arc move in concave corner cannot be reached by the tool without gouging")
 
 
 def _gouge(c: Compensation) -> NoReturn:
@@ -479,7 +567,13 @@ def take_canon_point(m: Machine) -> None:
     held, where the held move starts.  The held move now ends there; the corner after it turns
     from the direction the programmed point's offset to that point gives."""
     c: Compensation = m.comp  # type: ignore[assignment]
-    if c.kind == 0 or c.side == 0:
+    if c.side == 0:  # turned off: the canon is still at the compensated point
+        pos = m.state.pos.copy()
+        pos[c.a] = c.ca
+        pos[c.b] = c.cb
+        m.state.pos = pos
+        return
+    if c.kind == 0:
         return
     a, b = c.a, c.b
     pos = c.start.copy()
@@ -509,6 +603,7 @@ def convert(m: Machine, k: float) -> None:
                 fields[i] *= k
     c.prog = [v * k if i < 3 else v for i, v in enumerate(c.prog)]
     c.radius *= k
+    c.slack *= k
     c.shift_a *= k
     c.shift_b *= k
     c.ca *= k

@@ -84,23 +84,32 @@ def start(it: Machine, side: int, diameter: float, orientation: int) -> None:
     if diameter < 0.0:
         side = -side
     st = it.state
-    it.comp = Compensation(side, abs(diameter) / 2.0, st.plane, st.pos, orientation)
+    it.comp = Compensation(side, abs(diameter) / 2.0, st.plane, st.pos, orientation,
+                           st.metric)
     st.ccomp = 410 if side > 0 else 420
     it.emit(ops.Comment(_ON[side]))
 
 
 def stop(it: Machine) -> None:
-    """G40: the held moves go out; the next move (straight) leaves the compensated path."""
+    """G40: the held moves go out; the next move (straight) leaves the compensated path (with a
+    tool of no radius, compensation just ends)."""
     st = it.state
-    if is_on(it):
+    c = it.comp
+    if c is not None and c.side != 0:
+        comp.check_held(c)
         comp.flush(it)
-        it.comp = Compensation.exit(st.plane, it.comp.prog)  # type: ignore[union-attr]
+        pos = st.pos
+        st.pos = c.prog.copy()  # the current point is the programmed one again
+        # a tool of no radius leaves no exit move: the next move may be an arc
+        it.comp = None if c.radius == 0.0 else Compensation.exit(st.plane, st, pos)
     st.ccomp = 400
     it.emit(_OFF)
 
 
 def end(it: Machine) -> None:
     """M2 / M30: what is held goes out; compensation ends without a word."""
+    if is_on(it):
+        comp.check_held(it.comp)  # type: ignore[arg-type]
     comp.flush(it)
     if it.comp is not None:
         it.comp = None
