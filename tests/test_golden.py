@@ -32,9 +32,6 @@ PENDING: dict[str, str] = {
     "ccomp-arc-arc-cusp": "cutter radius compensation: not matched yet",
     "ccomp-err-concave-line-arc": "cutter radius compensation: not matched yet",
     "ccomp-g42.1-entry-arc-g2": "cutter radius compensation: not matched yet",
-    "ccomp-g42.1-square-ccw-outside": "cutter radius compensation: not matched yet",
-    "ccomp-params-5422-in-debug-before-entry": "cutter radius compensation: not matched yet",
-    "ccomp-rotation-offset-arc": "cutter radius compensation: not matched yet",
 }
 
 
