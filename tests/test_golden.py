@@ -30,9 +30,6 @@ KNOWN: dict[str, str] = {
 # not strict, so a case passes as soon as its code is there. Remove a prefix once all its cases pass.
 PENDING: dict[str, str] = {
     "ccomp-g42.1-entry-arc-g2": "cutter radius compensation: not matched yet",
-    "ccomp-g42.1-square-ccw-outside": "cutter radius compensation: not matched yet",
-    "ccomp-params-5422-in-debug-before-entry": "cutter radius compensation: not matched yet",
-    "ccomp-rotation-offset-arc": "cutter radius compensation: not matched yet",
 }
 
 

@@ -234,8 +234,8 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
             raise NgcSemanticError(
                 "Length of cutter compensation entry move is not greater than the tool radius")
         t = _atan2(eb - cb, ea - ca)
-        n = t + HALF_PI if side > 0 else t - HALF_PI
-        na, nb = ea + r * _cos(n), eb + r * _sin(n)
+        # the direction's unit vector turned a quarter toward the side (rs274's signs of zero)
+        na, nb = ea - side * r * _sin(t), eb + side * r * _cos(t)
         c.first = False
         c.sa, c.sb = ca, cb
         c.pdir = t
@@ -256,7 +256,10 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         c.prog = end
         return
     t = _atan2(eb - pb, ea - pa)
+    # the normal's angle, in [0, 2 pi) as rs274 takes it (which decides the signs of zero)
     n = t + HALF_PI if side > 0 else t - HALF_PI
+    if n < 0.0:
+        n += TWO_PI
     dx, dy = r * _cos(n), r * _sin(n)
     _corner(m, c, t, pa + dx, pb + dy, LINE, 0.0, 0.0, 0.0, 0, op_type is ops.StraightTraverse,
             0.0, 0.0)
