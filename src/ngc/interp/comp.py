@@ -425,11 +425,18 @@ def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: f
         ua, ub = _cos(before), _sin(before)
         if kind == LINE:
             # the corner takes back r tan(turn / 2) of the held line, which must be that long;
-            # rs274 steps back along the held line by that much
+            # the crossing lies on the corner's bisector (the mean of the two directions, turned
+            # a quarter), r / cos(turn / 2) from the programmed corner
             back = c.radius * math.tan(abs(turn) / 2)
             if back > _hypot(c.ca - c.sa, c.cb - c.sb):
                 _gouge(c)
-            return c.ca - back * ua, c.cb - back * ub
+            reach = c.radius / _cos(turn / 2)
+            angle = (before + tangent) / 2 + HALF_PI
+            ca, cb = _cos(angle), _sin(angle)
+            pa, pb = c.prog[c.a], c.prog[c.b]
+            if ca * (c.ca - pa) + cb * (c.cb - pb) < 0:  # the mean of the directions points out
+                ca, cb = _cos(angle + math.pi), _sin(angle + math.pi)
+            return pa + reach * ca, pb + reach * cb
         found = _line_circle(c.ca + la, c.cb + lb, ua, ub, k1, k2, kr)
         if found is None:
             _arc_gouge()
