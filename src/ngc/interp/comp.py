@@ -24,7 +24,8 @@ from the compensated point to the programmed end; an arc there is an error.
 
 Positions: ``State.pos`` is the compensated point (as #5420-#5428 show it); :attr:`prog` holds the
 programmed one, from which the next block's end is computed.  Lathe tools (G41.1/G42.1 L1-L8 in
-XZ) shift the whole compensated path by the radius toward the tool's orientation.
+XZ) shift the whole compensated path by the radius toward the tool's orientation; the current
+point shown (``State.pos``) is the compensated one before that shift.
 """
 
 from __future__ import annotations
@@ -209,8 +210,19 @@ def _out(c: Compensation, m: Machine, end: list[float], na: float, nb: float) ->
     out[c.b] = nb + c.shift_b
     c.ca = na
     c.cb = nb
-    m.state.pos = out
+    m.state.pos = _shown(c, out, na, nb)
     return out
+
+
+def _shown(c: Compensation, out: list[float], na: float, nb: float) -> list[float]:
+    """The current point as rs274 shows it (#5420-#5428, #<_x>...): the compensated end before
+    a lathe orientation's shift."""
+    if c.shift_a == 0.0 and c.shift_b == 0.0:
+        return out
+    pos = out.copy()
+    pos[c.a] = na
+    pos[c.b] = nb
+    return pos
 
 
 # -- straight moves -------------------------------------------------------------------------------
@@ -252,7 +264,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         m.held.append([op_type, out])
         if r == 0.0:
             flush(m)
-        m.state.pos = out
+        m.state.pos = _shown(c, out, c.ca, c.cb)
         c.prog = end
         return
     t = _atan2(eb - pb, ea - pa)
@@ -277,7 +289,13 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     out[b] = nb + c.shift_b
     c.ca = na
     c.cb = nb
-    st.pos = out
+    if c.shift_a == 0.0 and c.shift_b == 0.0:
+        st.pos = out
+    else:  # shown before the lathe orientation's shift
+        pos = end.copy()
+        pos[a] = na
+        pos[b] = nb
+        st.pos = pos
     item = [op_type, out]
     held.append(item)
     c.item = item

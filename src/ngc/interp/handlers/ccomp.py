@@ -98,7 +98,9 @@ def stop(it: Machine) -> None:
     if c is not None and c.side != 0:
         comp.check_held(c)
         comp.flush(it)
-        pos = st.pos
+        pos = st.pos.copy()  # the canon's point: the compensated one, shifted by an orientation
+        pos[c.a] = c.ca + c.shift_a
+        pos[c.b] = c.cb + c.shift_b
         st.pos = c.prog.copy()  # the current point is the programmed one again
         # a tool of no radius leaves no exit move: the next move may be an arc
         it.comp = None if c.radius == 0.0 else Compensation.exit(st.plane, st, pos)
