@@ -66,24 +66,10 @@ def test_the_work_budget_is_per_run() -> None:
     interp.run(loop)  # 40 + 40 iterations: over 50 in all, within it in each run
 
 
-def test_a_line_kept_by_the_fast_path_is_checked_again_in_a_new_state() -> None:
-    """A line of literal words that moves nothing is kept with its plan only if its check holds
-    in every state: ``G38.2`` is refused as not supported, except while compensation is on,
-    when rs274's own refusal comes at its step."""
-    sink = ListSink()
-    interp = Interpreter(sink)
-    with pytest.raises(NgcError, match="All axes missing with motion code"):
-        interp.run("G0 X0 Y-10\nG41.1 D4\nG1 X0 Y0 F100\nG38.2\nM2\n".splitlines())
-    interp.machine.comp = None
-    interp.state.ccomp = 400
-    with pytest.raises(NgcError, match="G38.2 is not supported yet"):
-        interp.run("G38.2\nM2\n".splitlines())
-    with pytest.raises(NgcError, match="G38.2 is not supported yet"):
-        Interpreter(ListSink()).run("G38.2\nM2\n".splitlines())
-
-
 def test_a_kept_line_runs_as_the_general_path_runs_it() -> None:
-    program = "G0 X0 Y-10\nG41.1 D4\nG1 X0 Y0 F100\nX10\nG40\nG1 X10 Y-10\nG41.1 D4\nG1 X0\nY10\nG40\nG0 X-10\nM2\n"
+    """The fast path keeps ``G41.1 D4`` and ``G40`` with their plans and runs them again."""
+    program = ("G0 X0 Y-10\nG41.1 D4\nG1 X0 Y0 F100\nX10\nG40\nG1 X10 Y-10\nG41.1 D4\nG1 X0\n"
+               "Y10\nG40\nG0 X-10\nM2\n")
     sink = ListSink()
     Interpreter(sink).run(program.splitlines())
     general = ListSink()
