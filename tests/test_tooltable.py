@@ -91,6 +91,7 @@ def test_canon_and_check_refuse_a_line_rs274_skips(tmp_path: Path) -> None:
     with pytest.raises(NgcConfigError) as caught:
         load_setup(MachineOptions(tool_table=str(path)))
     assert "unrecognized line: T2 P2 K1" in caught.value.message
+    assert ", line 2: " in caught.value.message
 
 
 def test_setup_reads_the_table(tmp_path: Path) -> None:

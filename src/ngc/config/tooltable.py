@@ -146,13 +146,16 @@ def read_tool_table(path: str, *, strict: bool = False) -> ToolTable:
     ``strict`` (``ngc canon``/``check``) refuses it, and a line that would be skipped."""
     try:
         with open(path, encoding="latin-1") as handle:
-            table = parse_tool_table(handle.read())
+            text = handle.read()
     except OSError as exc:
         if strict:
             raise NgcConfigError(f"cannot read tool table {path}: {exc.strerror}", file=path) from None
         return ToolTable()
+    table = parse_tool_table(text)
     if strict and table.skipped:
-        raise NgcConfigError(f"tool table {path}: unrecognized line: {table.skipped[0].strip()}",
+        bad = table.skipped[0]
+        number = next(i for i, raw in enumerate(text.splitlines(), 1) if raw.rstrip("\r\n") == bad)
+        raise NgcConfigError(f"tool table {path}, line {number}: unrecognized line: {bad.strip()}",
                              file=path)
     return table
 
