@@ -57,7 +57,6 @@ import contextlib
 import math
 import os
 import re
-import secrets
 import stat
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 
@@ -319,7 +318,7 @@ def _reason(exc: OSError) -> str:
 
 def _temp_name(path: str) -> str:
     """A temporary name next to ``path``: ``<path>.<random>.new``."""
-    return f"{path}.{secrets.token_hex(6)}.new"
+    return f"{path}.{os.urandom(6).hex()}.new"
 
 
 def _create_temp(path: str) -> tuple[int, str]:
