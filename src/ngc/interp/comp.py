@@ -102,8 +102,6 @@ class Compensation:
         "kb",
         "kind",
         "kr",
-        "pa",
-        "pb",
         "pdir",
         "prog",
         "ptype",
@@ -134,7 +132,7 @@ class Compensation:
         self.ca = pos[self.a]
         self.cb = pos[self.b]
         # the held move: kind, its item in Machine.held, its canon type, its start, its
-        # programmed direction at the end (a line) or its circle (an arc), the programmed corner
+        # programmed direction at the end (a line) or its circle (an arc)
         self.kind = 0
         self.item: list[Any] = []
         self.ptype: type = ops.StraightFeed
@@ -142,7 +140,6 @@ class Compensation:
         self.pdir = 0.0
         self.ka = self.kb = self.kr = 0.0
         self.rot = 0
-        self.pa = self.pb = 0.0
         self.start = pos  # the point the held move starts from (out of the plane)
         # the held arc's sweep (radians) before a corner moved its start or end (0.0: none did),
         # and how much further it may then turn: rs274 allows 0.001 inch in program units, taken
@@ -641,5 +638,3 @@ def convert(m: Machine, k: float) -> None:
     c.ka *= k
     c.kb *= k
     c.kr *= k
-    c.pa *= k
-    c.pb *= k

@@ -14,6 +14,7 @@ from ...errors import NgcSemanticError
 from .. import comp
 from ..comp import Compensation
 from ..state import MM_PER_INCH
+from .tools import whole
 
 if TYPE_CHECKING:
     from ..machine import Machine
@@ -42,6 +43,8 @@ def dynamic(it: Machine, r: Resolved, code: int) -> None:
         raise NgcSemanticError("Cutter radius compensation allowed only in XY, XZ planes")
     if "l" in w and plane != 180:
         raise NgcSemanticError(f"{name} with L word, but plane is not G18")
+    if is_on(it):
+        raise NgcSemanticError("Cannot turn cutter radius comp on when on")
     start(it, 1 if code == 411 else -1, w["d"], int(w.get("l", 0.0)))
 
 
@@ -55,7 +58,7 @@ def from_table(it: Machine, r: Resolved, code: int) -> None:
     if is_on(it):
         raise NgcSemanticError("Cannot turn cutter radius comp on when on")
     d = r.w.get("d", 0.0)
-    number = _whole(d)
+    number = whole(d)
     if number < 0 or abs(d - number) >= WHOLE_TOLERANCE:
         raise NgcSemanticError(f"{name} requires D word to be a whole number")
     entry = it.current_tool() if number == 0 else it.tools.find(number)
@@ -71,16 +74,10 @@ def from_table(it: Machine, r: Resolved, code: int) -> None:
 WHOLE_TOLERANCE = 0.0001
 
 
-def _whole(value: float) -> int:
-    """The nearest whole number, halves away from zero."""
-    return int(value + 0.5) if value >= 0.0 else -int(-value + 0.5)
-
-
 def start(it: Machine, side: int, diameter: float, orientation: int) -> None:
     """Turn compensation on to the left (``side`` 1) or right (-1) of the programmed path, with a
-    tool of ``diameter`` (program units; a negative one takes the other side)."""
-    if is_on(it):
-        raise NgcSemanticError("Cannot turn cutter radius comp on when on")
+    tool of ``diameter`` (program units; a negative one takes the other side).  The caller
+    has refused it while compensation is on."""
     if diameter < 0.0:
         side = -side
     st = it.state
@@ -158,7 +155,9 @@ REFUSED: Mapping[str, Callable[[Machine, Resolved, int], None]] = MappingProxyTy
     "g52": _always("Cannot change axis offsets with cutter radius comp"),
     "home": _always("Cannot use g28 or g30 with cutter radius comp"),
     "home_store": _always("Cannot set reference point with cutter compensation in effect"),
+    "tool_length": _always("Cannot change tool offset with cutter radius compensation on"),
     "tool_length_off": _always("Cannot change tool offset with cutter radius compensation on"),
+    "change_tool": _always("Cannot change tools with cutter radius compensation on"),
     "retract_mode": _always("Cannot change retract mode with cutter radius compensation on"),
 })
 

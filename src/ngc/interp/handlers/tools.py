@@ -81,8 +81,6 @@ def select_tool(it: Machine, t: float) -> None:
 def change_tool(it: Machine) -> None:
     """M6: load the selected slot (the spindle keeps its entry when none is selected)."""
     st = it.state
-    if st.ccomp != 400:
-        raise NgcSemanticError("Cannot change tools with cutter radius compensation on")
     index = st.selected_index
     it.emit(ops.StartChange())
     st.spindle = 0  # the spindle stops for the change
@@ -97,7 +95,7 @@ def set_tool_number(it: Machine, r: Words) -> None:
     """M61 Q: the spindle holds tool Q, without a change (its entry is not loaded)."""
     st = it.state
     q = r.w.get("q")
-    number = None if q is None else int(_round(q))
+    number = None if q is None else whole(q)
     if number is None or number < 0:
         raise NgcSemanticError("Need non-negative Q-word to specify tool number with M61")
     index = 0 if number == 0 else st.tools.index(number)
@@ -108,9 +106,9 @@ def set_tool_number(it: Machine, r: Words) -> None:
     st.tool_changed = True
 
 
-def _round(value: float) -> float:
-    """rs274 rounds a tool number to the nearest integer, halves away from zero."""
-    return float(int(value + 0.5)) if value >= 0 else -float(int(-value + 0.5))
+def whole(value: float) -> int:
+    """The nearest whole number, halves away from zero, as rs274 rounds a tool number."""
+    return int(value + 0.5) if value >= 0 else -int(-value + 0.5)
 
 
 def canon_position(st: State) -> None:
@@ -155,8 +153,6 @@ def _from_mm(value: float, axis: int, metric: bool) -> float:
 def tool_length(it: Machine, r: Words, code: int) -> None:
     """G43 [H], G43.1 axes, G43.2 H."""
     st = it.state
-    if st.ccomp != 400:
-        raise NgcSemanticError("Cannot change tool offset with cutter radius compensation on")
     w = r.w
     if code == 430:
         h = w.get("h")
@@ -183,9 +179,6 @@ def tool_length(it: Machine, r: Words, code: int) -> None:
 
 def tool_length_off(it: Machine) -> None:
     """G49: no tool length offset."""
-    st = it.state
-    if st.ccomp != 400:
-        raise NgcSemanticError("Cannot change tool offset with cutter radius compensation on")
     _apply(it, [0.0] * 9)
 
 
@@ -216,7 +209,7 @@ def g10_tools(it: Machine, r: Words, l_word: int) -> None:
             raise NgcSemanticError(f"G10 L0 not allowed with loaded tool <{tools.spindle.number}>\n")
         it.emit(ops.ReloadTooldata())
         return
-    number = int(_round(w["p"]))
+    number = whole(w["p"])
     index = tools.index(number)
     if index is None:
         raise _not_found(number)
@@ -227,11 +220,11 @@ def g10_tools(it: Machine, r: Words, l_word: int) -> None:
     orientation = entry.orientation
     q = w.get("q")
     if q is not None and q != -1.0:
-        if q < 0 or abs(q - _round(q)) > 0.0001:
+        if q < 0 or abs(q - whole(q)) > 0.0001:
             raise NgcSemanticError("Q number in G10 is not an integer")
-        if _round(q) > 9:
+        if whole(q) > 9:
             raise NgcSemanticError("Invalid tool orientation")
-        orientation = int(_round(q))
+        orientation = whole(q)
     offsets = list(entry.offsets)
     metric = st.metric
     if l_word == 1:
