@@ -305,12 +305,10 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
 
 # -- arcs -----------------------------------------------------------------------------------------
 def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> None:
-    """A G2/G3 (center ``c1, c2`` in the plane) while compensation is on (or just turned off)."""
+    """A G2/G3 (center ``c1, c2`` in the plane) while compensation is on (an arc as the exit
+    move was refused before its checks, in ``motion.arc``)."""
     c: Compensation = m.comp  # type: ignore[assignment]
     side = c.side
-    if side == 0:
-        raise NgcSemanticError(
-            "The move just after exiting cutter compensation mode must be straight, not an arc")
     prog = c.prog
     a, b = c.a, c.b
     r = c.radius
