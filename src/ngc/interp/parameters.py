@@ -126,6 +126,8 @@ class Parameters:
 
     # -- reading (expression context) ---------------------------------------------------------
     def num(self, index: int) -> float:
+        if index < TOOL_DATA:
+            return self.numbered[index]  # no parameter below the tool data is computed
         if CURRENT_POSITION <= index < CURRENT_POSITION + 9 and self.state.ccomp != 400:
             raise NgcRuntimeError("Cannot read current position with cutter radius compensation on")
         return self.shown(index)
