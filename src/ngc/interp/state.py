@@ -86,9 +86,11 @@ class State:
         self.tool_index = 1
         self.selected_index = 0  # the slot the last T word selected (0: none / T0)
         self.selected_tool = 0  # the last T word
-        # Where the canon thinks the current point is, when a tool length offset change moved
-        # the interpreter's current point but not the canon's (``canon_anchor`` is that
-        # ``pos`` list; a move replaces it).  M6 and M61 take the canon's point back.
+        # Where the canon thinks the current point is, when a tool length offset or rotation
+        # change moved the interpreter's current point but not the canon's: the point plus the
+        # G5x and G92 offsets, in millimetres (see tools.hold_canon); ``canon_anchor`` is the
+        # ``pos`` list it belongs to (a move replaces it).  M6 and M61 take the canon's point
+        # back.
         self.canon_pos: list[float] | None = None
         self.canon_anchor: list[float] | None = None
         self.tool_changed = False  # M6 or M61 ran in the line being executed
