@@ -172,7 +172,7 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
     letters = parts[1::2]
     try:
         # The split alternates letter and text, so both slices have the same length.
-        w = dict(zip(letters, map(float, parts[2::2]), strict=False))
+        w = dict(zip(letters, map(float, parts[2::2])))  # noqa: B905 (a keyword costs a dict)
     except ValueError:
         return None
     if len(w) != len(letters) or not _FAST_LETTERS.issuperset(w):
