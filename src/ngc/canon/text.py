@@ -1,13 +1,31 @@
 """The rs274 text sink: canonical operations printed exactly as LinuxCNC's ``rs274 -g`` prints them.
 
 Each line is a running counter (``%5d ``), the block's N column, then the call in C printf format.
+
+Formatting numbers is most of the sink's work.  A move's last four fields (Z A B C, or the helix
+end and A B C of an arc) are most often the very objects the move before carried (an axis not
+programmed keeps its value): when they are, the text made for them is used again.  The test is
+identity, not equality, so -0.0 never takes the text of 0.0.
 """
 
 from __future__ import annotations
 
-from typing import TextIO
+from typing import Any, TextIO
 
-from .ops import TEMPLATES, Op
+from .ops import TEMPLATES, ArcFeed, Op, StraightFeed, StraightTraverse
+
+# The ops whose last four fields are the tail kept (see the module docstring).
+_TAILED = (StraightTraverse, StraightFeed, ArcFeed)
+_TAIL = "%.4f, %.4f, %.4f, %.4f"
+_Format = tuple[str, str, int, list[Any]]
+
+
+def _format(kind: type) -> _Format:
+    template = "%5d %s" + TEMPLATES[kind] + "\n"
+    if kind not in _TAILED:
+        return template, "", 0, []
+    head = template[:template.rindex(", " + _TAIL)] + ", %s)\n"
+    return template, head, len(kind._fields) - 4, [None, (None,) * 4, None]
 
 
 class TextSink:
@@ -16,7 +34,7 @@ class TextSink:
     Lines are collected and written in batches (``flush`` writes the rest; call it at the end).
     """
 
-    __slots__ = ("_count", "_lines", "_prints", "_stream", "_templates")
+    __slots__ = ("_count", "_formats", "_lines", "_prints", "_stream")
 
     BATCH_MASK = 4095  # write every 4096 operations
 
@@ -27,14 +45,34 @@ class TextSink:
         self._prints = prints
         self._lines: list[str] = []
         self._count = 0
-        self._templates: dict[type, str] = {}
+        # op type -> its template, and for a move: the template with the tail as one %s, where
+        # the tail starts, and [the last move's first tail field, a tail, that tail's text once a
+        # move had it again]
+        self._formats: dict[type, _Format] = {}
 
     def emit(self, op: Op, label: str, line: int) -> None:
         count = self._count = self._count + 1
         try:
-            template = self._templates[type(op)]
+            template, head, i, memo = self._formats[type(op)]
         except KeyError:
-            template = self._templates[type(op)] = "%5d %s" + TEMPLATES[type(op)] + "\n"
+            template, head, i, memo = self._formats[type(op)] = _format(type(op))
+        if i:
+            z = op[i]  # type: ignore[index]
+            if z is memo[0]:
+                tail = op[i:]  # type: ignore[index]
+                last = memo[1]
+                if tail[1] is last[1] and tail[2] is last[2] and tail[3] is last[3]:
+                    text = memo[2]
+                    if text is None:
+                        text = memo[2] = _TAIL % tail
+                    self._lines.append(head % ((count, label) + op[:i] + (text,)))  # type: ignore[index]  # noqa: RUF005
+                    if not count & self.BATCH_MASK:
+                        self.flush()
+                    return
+                memo[1] = tail
+            else:
+                memo[0] = z  # (the A B C kept may be older: the text waits for a match)
+            memo[2] = None
         # (a tuple concatenation is cheaper than unpacking into a new tuple)
         self._lines.append(template % ((count, label) + op))  # type: ignore[operator]  # noqa: RUF005
         if not count & self.BATCH_MASK:

@@ -270,8 +270,15 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     if n < 0.0:
         n += TWO_PI
     dx, dy = r * _cos(n), r * _sin(n)
-    _corner(m, c, t, pa + dx, pb + dy, LINE, 0.0, 0.0, 0.0, 0, op_type is ops.StraightTraverse,
-            0.0, 0.0)
+    turn = t - c.pdir
+    while turn > math.pi:
+        turn -= TWO_PI
+    while turn < -math.pi:  # a reversal keeps its sign
+        turn += TWO_PI
+    if -SMALL <= turn <= SMALL or r == 0.0:  # a tool of no radius turns on the spot
+        check_held(c)
+    else:
+        _corner(m, c, t, turn, pa + dx, pb + dy, LINE, traverse=op_type is ops.StraightTraverse)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
     st = m.state
@@ -279,7 +286,12 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     # _hold(m, c, LINE, op_type, _out(c, m, end, ea + dx, eb + dy)), written out: the hot path
     held = m.held
     if held:
-        flush(m)
+        item = c.item
+        if len(held) == 1 and held[0] is item:  # the held move alone
+            m.sink.emit(_new(item[0], item[1]), m.label, m.line)
+            held.clear()
+        else:
+            flush(m)
     na, nb = ea + dx, eb + dy
     out = end.copy()
     out[a] = na + c.shift_a
@@ -358,8 +370,16 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     # rs274 meets a held line at the arc's start angle but the end's radius: the line moves
     # along the start's radius by the difference
     lift = (big_end - big) / big
-    _corner(m, c, tangent, sa, sb, ARC, c1, c2, kr, rotation, False,
-            lift * (pa - c1), lift * (pb - c2))
+    turn = tangent - c.pdir
+    while turn > math.pi:
+        turn -= TWO_PI
+    while turn < -math.pi:  # a reversal keeps its sign
+        turn += TWO_PI
+    if -SMALL <= turn <= SMALL or r == 0.0:  # a tool of no radius turns on the spot
+        check_held(c)
+    else:
+        _corner(m, c, tangent, turn, sa, sb, ARC, c1, c2, kr, rotation, False,
+                lift * (pa - c1), lift * (pb - c2))
     # the corner moved the start (on, inside; or the held move ends a little off the circle):
     # the arc must not turn further when it goes out
     c.sweep = _sweep(c1, c2, sa, sb, ra, rb, rotation) if (c.ca != sa or c.cb != sb) else 0.0
@@ -386,21 +406,14 @@ def _arc_fields(c: Compensation, end: list[float], ea: float, eb: float, k1: flo
 
 
 # -- corners --------------------------------------------------------------------------------------
-def _corner(m: Machine, c: Compensation, tangent: float, sa: float, sb: float, kind: int,
-            k1: float, k2: float, kr: float, rot: int, traverse: bool, la: float,
-            lb: float) -> None:
+def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float, sb: float,
+            kind: int = LINE, k1: float = 0.0, k2: float = 0.0, kr: float = 0.0, rot: int = 0,
+            traverse: bool = False, la: float = 0.0, lb: float = 0.0) -> None:
     """Join the held move to the next one, which starts (offset) at ``sa, sb`` with direction
-    ``tangent`` (a line, or an arc of center ``k1, k2``, compensated radius ``kr`` and
-    direction ``rot``).  Before a traverse, the corner is a traverse too."""
+    ``tangent``, ``turn`` from the held one's (a line, or an arc of center ``k1, k2``,
+    compensated radius ``kr`` and direction ``rot``), not within SMALL of straight.  Before a
+    traverse, the corner is a traverse too."""
     before = c.pdir
-    turn = tangent - before
-    while turn > math.pi:
-        turn -= TWO_PI
-    while turn < -math.pi:  # a reversal keeps its sign
-        turn += TWO_PI
-    if -SMALL <= turn <= SMALL or c.radius == 0.0:  # a tool of no radius turns on the spot
-        check_held(c)
-        return
     side = c.side
     crossing = None
     inside = turn * side > 0
