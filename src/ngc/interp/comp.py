@@ -161,7 +161,7 @@ class _Exit(Compensation):
     __slots__ = ("state",)
 
     def __init__(self, plane: int, state: State, pos: list[float]) -> None:
-        super().__init__(0, 0.0, plane, pos)  # ca, cb: the compensated point, the canon's
+        Compensation.__init__(self, 0, 0.0, plane, pos)  # ca, cb: the compensated point, the canon's
         self.state = state
 
     @property
@@ -281,9 +281,17 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         _corner(m, c, t, turn, pa + dx, pb + dy, LINE, traverse=op_type is ops.StraightTraverse)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
+    _take(m, c, LINE, op_type, [], end, ea + dx, eb + dy)
+
+
+def _take(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[Any],
+          end: list[float], na: float, nb: float) -> None:
+    """Emit what is held and hold the next move, which starts at the current point and is
+    programmed to ``end``, with its compensated end ``na, nb``: a line (its fields are made
+    here) or an arc (``fields``, whose end is set here).  The hot path of :func:`_hold` and
+    :func:`_out`."""
     st = m.state
     c.start = st.pos
-    # _hold(m, c, LINE, op_type, _out(c, m, end, ea + dx, eb + dy)), written out: the hot path
     held = m.held
     if held:
         item = c.item
@@ -292,26 +300,38 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
             held.clear()
         else:
             flush(m)
-    na, nb = ea + dx, eb + dy
+    a, b = c.a, c.b
     out = end.copy()
-    out[a] = na + c.shift_a
-    out[b] = nb + c.shift_b
-    c.ca = na
-    c.cb = nb
     if c.shift_a == 0.0 and c.shift_b == 0.0:
+        out[a] = na
+        out[b] = nb
+        if kind == LINE:
+            fields = out
+        else:
+            fields[0] = na
+            fields[1] = nb
         st.pos = out
     else:  # shown before the lathe orientation's shift
-        pos = end.copy()
-        pos[a] = na
-        pos[b] = nb
-        st.pos = pos
-    item = [op_type, out]
+        shown = out.copy()
+        shown[a] = na
+        shown[b] = nb
+        st.pos = shown
+        out[a] = na + c.shift_a
+        out[b] = nb + c.shift_b
+        if kind == LINE:
+            fields = out
+        else:
+            fields[0] = out[a]
+            fields[1] = out[b]
+    c.ca = na
+    c.cb = nb
+    item = [op_type, fields]
     held.append(item)
     c.item = item
-    c.kind = LINE
+    c.kind = kind
     c.ptype = op_type
     c.prog = end
-    if r == 0.0:
+    if c.radius == 0.0:
         flush(m)
 
 
@@ -386,11 +406,10 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     c.sa, c.sb = c.ca, c.cb
     c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
     c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
-    fields = _arc_fields(c, end, ra, rb, c1, c2, rotation)
-    c.start = m.state.pos
-    _hold(m, c, ARC, ops.ArcFeed, fields)
-    _out(c, m, end, ra, rb)
-    c.prog = end
+    h = end[c.h]
+    _take(m, c, ARC, ops.ArcFeed,
+          [ra, rb, c1 + c.shift_a, c2 + c.shift_b, rotation, h, end[3], end[4], end[5]], end, ra,
+          rb)
 
 
 def _end_tangent(ra: float, rb: float, rotation: int) -> float:

@@ -20,8 +20,8 @@ if TYPE_CHECKING:
     from ..machine import Machine
     from ..resolve import Resolved
 
-_ON = {1: "interpreter: cutter radius compensation on left",
-       -1: "interpreter: cutter radius compensation on right"}
+_ON = {1: ops.Comment("interpreter: cutter radius compensation on left"),
+       -1: ops.Comment("interpreter: cutter radius compensation on right")}
 _OFF = ops.Comment("interpreter: cutter radius compensation off")
 
 
@@ -84,7 +84,7 @@ def start(it: Machine, side: int, diameter: float, orientation: int) -> None:
     it.comp = Compensation(side, abs(diameter) / 2.0, st.plane, st.pos, orientation,
                            st.metric)
     st.ccomp = 410 if side > 0 else 420
-    it.emit(ops.Comment(_ON[side]))
+    it.emit(_ON[side])
 
 
 def stop(it: Machine) -> None:
