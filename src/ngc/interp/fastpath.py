@@ -22,7 +22,7 @@ tests/test_golden.py runs every golden case both ways and requires the same tran
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 from ..canon import ops
 from ..errors import NgcSemanticError
@@ -48,7 +48,7 @@ from ..language.parser import (
 from ..language.words import Words
 from . import comp
 from .check import check
-from .dispatch import Dispatcher, Handler
+from .dispatch import Dispatcher
 from .handlers import modes, motion, program
 from .machine import Machine
 from .parameters import INI_PREFIX, PREDEFINED, Parameters
@@ -73,7 +73,7 @@ class Compiled(NamedTuple):
 class FastPath:
     """The plain-line shortcuts for one machine and code table."""
 
-    __slots__ = ("_arcs", "_lines", "_motion", "_static", "dispatcher", "execute", "m", "table")
+    __slots__ = ("_arcs", "_lines", "_motion", "dispatcher", "execute", "m", "table")
 
     def __init__(self, m: Machine, table: CodeTable, execute: Callable[[Block], None],
                  dispatcher: Dispatcher) -> None:
@@ -83,8 +83,6 @@ class FastPath:
         self.table = table
         self.execute = execute
         self.dispatcher = dispatcher
-        # Raw line -> (words, N column, steps) of the lines of literal words that move nothing.
-        self._static: dict[str, tuple[Words, str, list[tuple[int, Handler, int]]]] = {}
         # G word value -> motion code, for the motion codes a plain line may hold.
         self._motion = {code / 10: code for code, row in table.g.items()
                         if row.group == G_MOTION and row.handler in PLAIN_HANDLERS}
@@ -93,7 +91,9 @@ class FastPath:
         # take the general path).
         self._arcs = {code: FREE_LETTERS | frozenset(row.uses) - {"p"} for code, row in table.g.items()
                       if code in self._motion.values() and row.uses}
-        self._lines: dict[str, tuple[dict[str, float], int | None, str]] = {}
+        # Raw line -> (words, motion code, N column) of a plain line, or (None, (resolved words,
+        # steps), N column) of a line of literal words that moves nothing.
+        self._lines: dict[str, tuple[dict[str, float] | None, Any, str]] = {}
 
     # -- what a plain line is -----------------------------------------------------------------
     def entry(
@@ -127,12 +127,6 @@ class FastPath:
         m = self.m
         hit = self._lines.get(raw)
         if hit is None:
-            static = self._static.get(raw)
-            if static is not None:
-                r, m.label, plan = static
-                m.line = m.state.line = number
-                self.dispatcher.run(m, r, plan)
-                return True
             found = split_plain(raw.replace(" ", "").lower())
             if found is None:
                 return self.comment_line(raw, number)
@@ -143,8 +137,8 @@ class FastPath:
                     cache.clear()
                 cache[raw] = hit
             else:
-                w, g, digits = found
-                r = words_of(w, g, self.table)
+                words, g, digits = found
+                r = words_of(words, g, self.table)
                 if not r.moves and r.g.get(G_NON_MODAL) != G_MACHINE_COORDINATES:
                     return self._run_static(raw, number, r, n_label(digits))
                 block = Block(number, raw.rstrip(C_SPACE))
@@ -156,6 +150,9 @@ class FastPath:
                 return True
         w, code, m.label = hit
         m.line = m.state.line = number
+        if w is None:  # moves nothing: code is (resolved words, steps)
+            self.dispatcher.run(m, code[0], code[1])  # type: ignore[index]
+            return True
         self.convert(w, code)
         return True
 
@@ -169,10 +166,10 @@ class FastPath:
         plan = self.dispatcher.plan(m, r)
         rows = self.table.g
         if all(rows[code].handler for code in r.g.values()):
-            cache = self._static
+            cache = self._lines
             if len(cache) >= PLAIN_CACHE_SIZE:
                 cache.clear()
-            cache[raw] = (r, label, plan)
+            cache[raw] = (None, (r, plan), label)
         self.dispatcher.run(m, r, plan)
         return True
 
