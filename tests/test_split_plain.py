@@ -42,6 +42,7 @@ def test_reads_plain_lines(text: str, expected: object) -> None:
     "x1\x00",
     "x1_0",  # float() takes underscores in numbers
     "x1é",
+    "x1\udcff",  # a byte that is not UTF-8, kept as a surrogate
     "xinf",  # read as I N F
 ])
 def test_leaves_the_rest_to_the_general_reader(text: str) -> None:

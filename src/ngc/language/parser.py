@@ -13,7 +13,7 @@ import re
 from ..errors import NgcError, NgcRuntimeError, NgcSyntaxError
 from . import expressions as ex
 from .codes import LINUXCNC, POLAR_LETTERS, CodeTable
-from .lexer import C_SPACE, WHITE_SPACE, normalize
+from .lexer import C_SPACE, normalize
 from .oword import (
     CONDITION,
     KEYWORDS,
@@ -33,8 +33,12 @@ Item = tuple[int, object, object]
 
 _LETTERS = "abcdefghijklmpqrstxyz$"
 _LOWER = "abcdefghijklmnopqrstuvwxyz"
-_LETTERS_TO_SPACES = bytes.maketrans(_LOWER.encode(), b" " * len(_LOWER))
-_NOT_LETTERS = bytes(c for c in range(256) if chr(c) not in _LOWER)
+# split_plain's tables: the bytes that end a number (a letter, or a byte that has no place in a
+# plain line: float() takes a form feed or \v as white space, rs274 does not), and the letters.
+_SKIPPED = "\t\n\r"
+_TO_SPACES = bytes(32 if chr(c) in _LOWER or chr(c) == "_" or c == 127
+                   or (c < 32 and chr(c) not in _SKIPPED) else c for c in range(256))
+_LETTERS_KEPT = bytes(c if chr(c) in _LOWER else 32 for c in range(256))
 _N_WORD = re.compile(r"n(\d+)(?:\.\d*)?")
 _LINE_NUMBER = re.compile(rb"(\d+)(?:\.\d*)?")
 # Letters the fast path takes: plain real-valued words (no M, no integer words, no N/O).
@@ -157,17 +161,20 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
     """Read a normalized line of plain words with literal numbers (the common CAM line).
 
     Cutting at the letters and letting ``float`` judge each number is the cheapest way to read
-    such a line; anything unusual (expressions, parameters, comments, bad numbers, repeated or unknown
-    letters, M or integer words) returns None and takes the general reader.  Returns the non-G
-    words, the G word's value and the N word's digits.
+    such a line; anything unusual (expressions, parameters, comments, bad numbers, repeated or
+    unknown letters, M or integer words) returns None and takes the general reader.  Returns the
+    non-G words, the G word's value and the N word's digits.
     """
-    if not text.isascii() or "_" in text:
+    if not text.isascii():
         return None
-    # the text between letters, and the letters (two byte translations, cheaper than a regex)
+    # The text between the letters, and the letters: two byte translations (cheaper than a
+    # regular expression).  A byte that has no place in a plain line (a space, "_", a control
+    # character but the white space rs274 skips) cuts the line once more, so that it has not
+    # one number per letter.
     data = text.encode()
-    parts = data.translate(_LETTERS_TO_SPACES).split(b" ")
-    letters = data.translate(None, _NOT_LETTERS).decode()
-    if parts[0] or len(parts) != len(letters) + 1:  # not a letter first, or a space somewhere
+    parts = data.translate(_TO_SPACES).split(b" ")
+    letters = b"".join(data.translate(_LETTERS_KEPT).split()).decode()
+    if parts[0] or len(parts) != len(letters) + 1:
         return None
     digits = None
     if letters[:1] == "n":
@@ -185,8 +192,6 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
         return None
     if len(w) != len(letters) or not _FAST_LETTERS.issuperset(w):
         return None
-    if not text.isprintable() and not text.translate(WHITE_SPACE).isprintable():
-        return None  # float() takes a form feed or \v as white space; rs274 does not
     return w, w.pop("g", None), digits
 
 
