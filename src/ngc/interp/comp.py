@@ -31,6 +31,7 @@ point shown (``State.pos``) is the compensated one before that shift.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from typing import TYPE_CHECKING, Any, NoReturn, Protocol
 
 from ..canon import ops
@@ -83,6 +84,42 @@ _atan2 = math.atan2
 _cos = math.cos
 _sin = math.sin
 _hypot = math.hypot
+
+
+def _round_bits(x: Fraction, bits: int) -> Fraction:
+    """``x`` rounded to ``bits`` significant bits, half to even."""
+    if x == 0:
+        return x
+    sign = 1 if x > 0 else -1
+    x = abs(x)
+    shift = bits - x.numerator.bit_length() + x.denominator.bit_length()
+    scaled = x * 2 ** shift if shift >= 0 else x / 2 ** -shift
+    if scaled >= 2 ** bits:
+        shift -= 1
+        scaled /= 2
+    elif scaled < 2 ** (bits - 1):
+        shift += 1
+        scaled *= 2
+    q, rem = divmod(scaled.numerator, scaled.denominator)
+    if 2 * rem > scaled.denominator or (2 * rem == scaled.denominator and q & 1):
+        q += 1
+    return sign * (Fraction(q) / 2 ** shift if shift >= 0 else Fraction(q * 2 ** -shift))
+
+
+def _long(x: Fraction) -> Fraction:
+    """``x`` as an x87 long double (64 significant bits) holds it."""
+    return _round_bits(x, 64)
+
+
+_PI_EXACT = Fraction("3.14159265358979323846264338327950288419716939937510582097494459")
+_PI_LONG = _long(_PI_EXACT)
+_HALF_PI_LONG = _long(_PI_EXACT / 2)
+_TWO_PI_LONG = _long(_PI_EXACT * 2)
+
+
+def _turn_up(angle: float) -> float:
+    """``angle + 2 pi``, summed in long double and stored as a double."""
+    return float(_long(Fraction(angle) + _TWO_PI_LONG))
 
 
 
@@ -265,10 +302,14 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         c.prog = end
         return
     t = _atan2(eb - pb, ea - pa)
-    # the normal's angle, in [0, 2 pi) as rs274 takes it (which decides the signs of zero)
-    n = t + HALF_PI if side > 0 else t - HALF_PI
-    if n < 0.0:
-        n += TWO_PI
+    if side > 0:
+        n = t + HALF_PI
+    elif t < _atan2(c.cb - pb, c.ca - pa):
+        # to the right, a direction below the angle of the current offset (the programmed point
+        # to the compensated one) is taken a turn up, the sum rounded as rs274 rounds it
+        n = _turn_up(t) - HALF_PI
+    else:
+        n = t - HALF_PI
     dx, dy = r * _cos(n), r * _sin(n)
     turn = t - c.pdir
     while turn > math.pi:
@@ -475,13 +516,7 @@ def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: f
             back = c.radius * math.tan(abs(turn) / 2)
             if back > _hypot(c.ca - c.sa, c.cb - c.sb):
                 _gouge(c)
-            reach = c.radius / _cos(turn / 2)
-            angle = (before + tangent) / 2 + HALF_PI
-            ca, cb = _cos(angle), _sin(angle)
-            pa, pb = c.prog[c.a], c.prog[c.b]
-            if ca * (c.ca - pa) + cb * (c.cb - pb) < 0:  # the mean of the directions points out
-                ca, cb = _cos(angle + math.pi), _sin(angle + math.pi)
-            return pa + reach * ca, pb + reach * cb
+            return _line_line(c, tangent)
         found = _line_circle(c.ca + la, c.cb + lb, ua, ub, k1, k2, kr)
         if found is None:
             _arc_gouge()
@@ -499,6 +534,31 @@ def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: f
         raise NgcSemanticError(
             "Arc to arc motion makes a corner the compensated tool can't fit in without gouging")
     return _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, points)
+
+
+def _line_line(c: Compensation, tangent: float) -> tuple[float, float]:
+    """The crossing of an inside corner between the held line and the next line (direction
+    ``tangent``), computed as rs274 computes it: ``offset`` is the angle from the programmed
+    corner to the held line's compensated end; to the left the offset, to the right the
+    direction, is taken a turn up when below the other; the corner's turn is pi/2 less their
+    difference, and the held end moves back along the held line (at the offset's angle turned
+    a quarter away from the side) by the radius over tan((pi - turn) / 2), the turn and its
+    half rounded from long double."""
+    side = c.side
+    offset = _atan2(c.cb - c.prog[c.b], c.ca - c.prog[c.a])
+    if side > 0:
+        if tangent > offset:
+            offset = _turn_up(offset)
+        spread = offset - tangent
+    else:
+        if tangent < offset:
+            tangent = _turn_up(tangent)
+        spread = tangent - offset
+    turn = float(_long(_HALF_PI_LONG - Fraction(spread)))
+    half = float(_long(_PI_LONG - Fraction(turn)) / 2)
+    back = c.radius / math.tan(half)
+    direction = offset + HALF_PI if side > 0 else offset - HALF_PI
+    return c.ca + back * _cos(direction), c.cb + back * _sin(direction)
 
 
 Points = tuple[tuple[float, float], tuple[float, float]]
