@@ -280,8 +280,9 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
             raise NgcSemanticError(
                 "Length of cutter compensation entry move is not greater than the tool radius")
         t = _atan2(eb - cb, ea - ca)
-        # the direction's unit vector turned a quarter toward the side (rs274's signs of zero)
-        na, nb = ea - side * r * _sin(t), eb + side * r * _cos(t)
+        # the direction turned a quarter toward the side, summed in long double
+        n = float(_long(Fraction(t) + side * _HALF_PI_LONG))
+        na, nb = ea + r * _cos(n), eb + r * _sin(n)
         c.first = False
         c.sa, c.sb = ca, cb
         c.pdir = t
