@@ -112,14 +112,25 @@ def _long(x: Fraction) -> Fraction:
 
 
 _PI_EXACT = Fraction("3.14159265358979323846264338327950288419716939937510582097494459")
-_PI_LONG = _long(_PI_EXACT)
-_HALF_PI_LONG = _long(_PI_EXACT / 2)
-_TWO_PI_LONG = _long(_PI_EXACT * 2)
+# pi, pi/2 and 2 pi to a long double's 64 bits, each as a double and the (exact) rest
+_PI_LO = float(_long(_PI_EXACT) - Fraction(math.pi))
+_HALF_PI_LO = float(_long(_PI_EXACT / 2) - Fraction(math.pi / 2))
+_TWO_PI_LO = float(_long(_PI_EXACT * 2) - Fraction(2 * math.pi))
+
+
+def _long_sum(*terms: float) -> float:
+    """The sum of ``terms`` (doubles) rounded to a long double's 64 bits, then to a double."""
+    total = math.fsum(terms)
+    half = math.ulp(total) / 2
+    # rounded once or twice, the sums differ only near a tie between two doubles
+    if abs(abs(math.fsum((*terms, -total))) - half) > half / 512 and math.frexp(total)[0] != 0.5:
+        return total
+    return float(_long(sum(map(Fraction, terms), Fraction(0))))
 
 
 def _turn_up(angle: float) -> float:
     """``angle + 2 pi``, summed in long double and stored as a double."""
-    return float(_long(Fraction(angle) + _TWO_PI_LONG))
+    return _long_sum(angle, TWO_PI, _TWO_PI_LO)
 
 
 
@@ -281,7 +292,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
                 "Length of cutter compensation entry move is not greater than the tool radius")
         t = _atan2(eb - cb, ea - ca)
         # the direction turned a quarter toward the side, summed in long double
-        n = float(_long(Fraction(t) + side * _HALF_PI_LONG))
+        n = _long_sum(t, side * HALF_PI, side * _HALF_PI_LO)
         na, nb = ea + r * _cos(n), eb + r * _sin(n)
         c.first = False
         c.sa, c.sb = ca, cb
@@ -555,8 +566,8 @@ def _line_line(c: Compensation, tangent: float) -> tuple[float, float]:
         if tangent < offset:
             tangent = _turn_up(tangent)
         spread = tangent - offset
-    turn = float(_long(_HALF_PI_LONG - Fraction(spread)))
-    half = float(_long(_PI_LONG - Fraction(turn)) / 2)
+    turn = _long_sum(HALF_PI, _HALF_PI_LO, -spread)
+    half = _long_sum(math.pi, _PI_LO, -turn) / 2
     back = c.radius / math.tan(half)
     direction = offset + HALF_PI if side > 0 else offset - HALF_PI
     return c.ca + back * _cos(direction), c.cb + back * _sin(direction)
