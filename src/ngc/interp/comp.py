@@ -31,11 +31,11 @@ point shown (``State.pos``) is the compensated one before that shift.
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 from typing import TYPE_CHECKING, Any, NoReturn, Protocol
 
 from ..canon import ops
 from ..errors import NgcSemanticError
+from ..longdouble import HALF_PI_REST, PI_REST, TWO_PI_REST, long_sum
 
 if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
@@ -86,51 +86,9 @@ _sin = math.sin
 _hypot = math.hypot
 
 
-def _round_bits(x: Fraction, bits: int) -> Fraction:
-    """``x`` rounded to ``bits`` significant bits, half to even."""
-    if x == 0:
-        return x
-    sign = 1 if x > 0 else -1
-    x = abs(x)
-    shift = bits - x.numerator.bit_length() + x.denominator.bit_length()
-    scaled = x * 2 ** shift if shift >= 0 else x / 2 ** -shift
-    if scaled >= 2 ** bits:
-        shift -= 1
-        scaled /= 2
-    elif scaled < 2 ** (bits - 1):
-        shift += 1
-        scaled *= 2
-    q, rem = divmod(scaled.numerator, scaled.denominator)
-    if 2 * rem > scaled.denominator or (2 * rem == scaled.denominator and q & 1):
-        q += 1
-    return sign * (Fraction(q) / 2 ** shift if shift >= 0 else Fraction(q * 2 ** -shift))
-
-
-def _long(x: Fraction) -> Fraction:
-    """``x`` as an x87 long double (64 significant bits) holds it."""
-    return _round_bits(x, 64)
-
-
-_PI_EXACT = Fraction("3.14159265358979323846264338327950288419716939937510582097494459")
-# pi, pi/2 and 2 pi to a long double's 64 bits, each as a double and the (exact) rest
-_PI_LO = float(_long(_PI_EXACT) - Fraction(math.pi))
-_HALF_PI_LO = float(_long(_PI_EXACT / 2) - Fraction(math.pi / 2))
-_TWO_PI_LO = float(_long(_PI_EXACT * 2) - Fraction(2 * math.pi))
-
-
-def _long_sum(*terms: float) -> float:
-    """The sum of ``terms`` (doubles) rounded to a long double's 64 bits, then to a double."""
-    total = math.fsum(terms)
-    half = math.ulp(total) / 2
-    # rounded once or twice, the sums differ only near a tie between two doubles
-    if abs(abs(math.fsum((*terms, -total))) - half) > half / 512 and math.frexp(total)[0] != 0.5:
-        return total
-    return float(_long(sum(map(Fraction, terms), Fraction(0))))
-
-
 def _turn_up(angle: float) -> float:
     """``angle + 2 pi``, summed in long double and stored as a double."""
-    return _long_sum(angle, TWO_PI, _TWO_PI_LO)
+    return long_sum(angle, TWO_PI, TWO_PI_REST)
 
 
 
@@ -292,7 +250,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
                 "Length of cutter compensation entry move is not greater than the tool radius")
         t = _atan2(eb - cb, ea - ca)
         # the direction turned a quarter toward the side, summed in long double
-        n = _long_sum(t, side * HALF_PI, side * _HALF_PI_LO)
+        n = long_sum(t, side * HALF_PI, side * HALF_PI_REST)
         na, nb = ea + r * _cos(n), eb + r * _sin(n)
         c.first = False
         c.sa, c.sb = ca, cb
@@ -566,8 +524,8 @@ def _line_line(c: Compensation, tangent: float) -> tuple[float, float]:
         if tangent < offset:
             tangent = _turn_up(tangent)
         spread = tangent - offset
-    turn = _long_sum(HALF_PI, _HALF_PI_LO, -spread)
-    half = _long_sum(math.pi, _PI_LO, -turn) / 2
+    turn = long_sum(HALF_PI, HALF_PI_REST, -spread)
+    half = long_sum(math.pi, PI_REST, -turn) / 2
     back = c.radius / math.tan(half)
     direction = offset + HALF_PI if side > 0 else offset - HALF_PI
     return c.ca + back * _cos(direction), c.cb + back * _sin(direction)

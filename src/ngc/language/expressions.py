@@ -16,6 +16,7 @@ from fractions import Fraction
 from typing import Protocol
 
 from ..errors import NgcRuntimeError
+from ..longdouble import PI, PI_LONG_DOUBLE, round_long_double
 
 
 class ParamContext(Protocol):
@@ -212,32 +213,14 @@ def _round(x: float) -> float:
 # function's zeros the double result agrees, or is one unit in the last place away (SIN[-9.3]: a
 # known difference, see tests/test_golden.py); near them (COS[90], SIN[180], TAN[90]) only the long
 # double angle gives rs274's sign and size, so it is rebuilt exactly there.
-_PI = Fraction(0xC90FDAA22168C234C4C6628B80DC1CD129024E088A67CC74020BBEA63B139B22, 1 << 254)
-_PI_LONG_DOUBLE = Fraction(0xC90FDAA22168C235, 1 << 62)
 _NEAR_ZERO = 1e-9
-
-
-def _round_long_double(q: Fraction) -> Fraction:
-    """``q`` rounded to a 64-bit mantissa, ties to even (x87 extended precision)."""
-    if q == 0:
-        return q
-    sign = -1 if q < 0 else 1
-    n, d = abs(q.numerator), q.denominator
-    shift = 63 - (n.bit_length() - d.bit_length())
-    if (n << shift if shift >= 0 else n) < (d if shift >= 0 else d << -shift) << 63:
-        shift += 1
-    num, den = (n << shift, d) if shift >= 0 else (n, d << -shift)
-    m, rem = divmod(num, den)
-    if 2 * rem > den or (2 * rem == den and m & 1):
-        m += 1
-    return sign * Fraction(m) / (Fraction(2) ** shift)
 
 
 def _quadrant(degrees: float) -> tuple[int, float]:
     """The long double angle of ``degrees`` as (k mod 4, d): angle = k * pi/2 + d."""
-    angle = _round_long_double(_round_long_double(Fraction(degrees) * _PI_LONG_DOUBLE) / 180)
-    k = round(angle / (_PI / 2))
-    return k % 4, float(angle - k * _PI / 2)
+    angle = round_long_double(round_long_double(Fraction(degrees) * PI_LONG_DOUBLE) / 180)
+    k = round(angle / (PI / 2))
+    return k % 4, float(angle - k * PI / 2)
 
 
 # sin of the multiples of 30 degrees whose value is not 0: the long double result rounds to these
