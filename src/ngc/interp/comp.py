@@ -132,8 +132,9 @@ class Compensation:
         self.first = True  # the entry move is next
         shift = ORIENTATION_SHIFT.get(orientation) if plane == 180 else None
         # (first, second) = (Z, X) in XZ
-        self.shift_a = 0.0 if shift is None else shift[1] * radius
-        self.shift_b = 0.0 if shift is None else shift[0] * radius
+        # (no shift is -0.0, which adds nothing: x + -0.0 is x, a -0.0 too)
+        self.shift_a = -0.0 if shift is None else shift[1] * radius or -0.0
+        self.shift_b = -0.0 if shift is None else shift[0] * radius or -0.0
         # the compensated point in the plane, before the orientation's shift
         self.ca = pos[self.a]
         self.cb = pos[self.b]
@@ -251,7 +252,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         t = _atan2(eb - cb, ea - ca)
         # the direction turned a quarter toward the side, summed in long double
         n = long_sum(t, side * HALF_PI, side * HALF_PI_REST)
-        na, nb = ea + r * _cos(n), eb + r * _sin(n)
+        na, nb = (ea + r * _cos(n), eb + r * _sin(n)) if r else (ea, eb)
         c.first = False
         c.sa, c.sb = ca, cb
         c.pdir = t
@@ -261,7 +262,10 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         return
     pa, pb = prog[a], prog[b]
     if ea == pa and eb == pb:
-        # Out of the plane: queued behind the held move, at its end.
+        # Out of the plane: queued behind the held move, at its end (a tool of no radius at the
+        # programmed point, whose zeros may have another sign).
+        if not r:
+            c.ca, c.cb = ea, eb
         out = end.copy()
         out[a] = c.ca + c.shift_a
         out[b] = c.cb + c.shift_b
@@ -280,7 +284,8 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         n = _turn_up(t) - HALF_PI
     else:
         n = t - HALF_PI
-    dx, dy = r * _cos(n), r * _sin(n)
+    # (a tool of no radius runs the programmed path: adding nothing keeps the sign of a zero)
+    dx, dy = (r * _cos(n), r * _sin(n)) if r else (-0.0, -0.0)
     turn = t - c.pdir
     while turn > math.pi:
         turn -= TWO_PI
@@ -365,8 +370,8 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     big = _hypot(pa - c1, pb - c2)
     rr = big + sign * r
     big_end = _hypot(ea - c1, eb - c2)
-    ra = ea + sign * r * ((ea - c1) / big_end)
-    rb = eb + sign * r * ((eb - c2) / big_end)
+    ra = ea + sign * r * ((ea - c1) / big_end) if r else ea
+    rb = eb + sign * r * ((eb - c2) / big_end) if r else eb
     if not outward and big <= r:
         raise NgcSemanticError("Tool radius not less than arc radius with comp")
     if c.first:
@@ -395,8 +400,8 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
         return
     t0 = _atan2(pb - c2, pa - c1)
     kr = big_end + sign * r
-    sa = pa + sign * r * ((pa - c1) / big)
-    sb = pb + sign * r * ((pb - c2) / big)
+    sa = pa + sign * r * ((pa - c1) / big) if r else pa
+    sb = pb + sign * r * ((pb - c2) / big) if r else pb
     tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
     # rs274 meets a held line at the arc's start angle but the end's radius: the line moves
     # along the start's radius by the difference
