@@ -292,7 +292,8 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     while turn < -math.pi:  # a reversal keeps its sign
         turn += TWO_PI
     if -SMALL <= turn <= SMALL or r == 0.0:  # a tool of no radius turns on the spot
-        check_held(c)
+        if c.kind == ARC:  # (a held line may run backwards into a straight corner: no gouge)
+            check_held(c)
     else:
         _corner(m, c, t, turn, pa + dx, pb + dy, LINE, traverse=op_type is ops.StraightTraverse)
     c.sa, c.sb = c.ca, c.cb
@@ -412,7 +413,8 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     while turn < -math.pi:  # a reversal keeps its sign
         turn += TWO_PI
     if -SMALL <= turn <= SMALL or r == 0.0:  # a tool of no radius turns on the spot
-        check_held(c)
+        if c.kind == ARC:  # (a held line may run backwards into a straight corner: no gouge)
+            check_held(c)
     else:
         _corner(m, c, tangent, turn, sa, sb, ARC, c1, c2, kr, rotation, False,
                 lift * (pa - c1), lift * (pb - c2))
