@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ...canon import ops
+from ...config.tooltable import length_from_program, length_to_program
 from ...errors import NgcSemanticError
 from ...language.codes import AXIS_LETTERS
 from ..frames import Vec, rotate, to_machine, to_program
@@ -33,12 +34,14 @@ if TYPE_CHECKING:
 
 # -- conversions ------------------------------------------------------------------------------------
 def _to_user(st: State, axis: int, value: float) -> float:
-    """A length in program units as stored in a parameter (inches)."""
-    return value / st.units_factor if LINEAR[axis] else value
+    """A length in program units as stored in a parameter (inches, through millimetres with
+    rs274's inch-per-mm factor, as tool lengths are)."""
+    return length_from_program(value, st.metric) if LINEAR[axis] else value
 
 
 def _from_user(st: State, axis: int, value: float) -> float:
-    return value * st.units_factor if LINEAR[axis] else value
+    """A parameter's length (inches) in program units."""
+    return length_to_program(value, st.metric) if LINEAR[axis] else value
 
 
 def _axis_words(r: Resolved) -> list[tuple[int, float]]:

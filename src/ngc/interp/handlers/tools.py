@@ -277,8 +277,8 @@ def _measured(
     machine = to_machine(st, st.pos, rotary=True)
     base = G54_ORIGIN + COORD_STRIDE * (_G59_3 - 1)
     numbered = it.params.numbered
-    k = st.units_factor
-    origin = [numbered[base + i] * (k if LINEAR[i] else 1.0) for i in range(AXES)]
+    origin = [length_to_program(numbered[base + i], st.metric) if LINEAR[i] else numbered[base + i]
+              for i in range(AXES)]
     rotation = numbered[base + 9]
     # The point in G59.3, with the entry's offset.
     point = [machine[i] - origin[i] - (tool[i] if i < 3 else 0.0) for i in range(AXES)]
