@@ -9,7 +9,7 @@ angles in degrees.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from types import MappingProxyType
 from typing import Any, NamedTuple, Protocol
 
@@ -24,7 +24,12 @@ class Op(Protocol):
 
 class Sink(Protocol):
     """Where canonical operations go.  ``label`` is the block's N column (``N..... `` if none);
-    ``line`` is the 1-based source line the operation comes from (0 outside the program)."""
+    ``line`` is the 1-based source line the operation comes from (0 outside the program).
+
+    A sink may also offer ``emit_move(kind, fields, label, line)``, taking a move
+    (:class:`StraightTraverse`, :class:`StraightFeed` or :class:`ArcFeed`) as its type and a
+    sequence of its fields, to the same effect as ``emit(kind(*fields), label, line)``: the
+    interpreter then sends moves that way (see :func:`mover`)."""
 
     def emit(self, op: Op, label: str, line: int) -> None: ...
 
@@ -361,3 +366,21 @@ TEMPLATES: Mapping[type, str] = MappingProxyType(
 def op_name(op: Op) -> str:
     """The canonical call's name, e.g. ``STRAIGHT_FEED``."""
     return TEMPLATES[type(op)].split("(", 1)[0]
+
+
+Mover = Callable[[type, Sequence[Any], str, int], None]
+
+
+def mover(sink: Sink) -> Mover:
+    """How moves go to ``sink``: its ``emit_move`` if it has one (see :class:`Sink`), else each
+    made into its op and emitted."""
+    fast: Mover | None = getattr(sink, "emit_move", None)
+    if fast is not None:
+        return fast
+    emit = sink.emit
+    new = tuple.__new__
+
+    def emit_move(kind: type, fields: Sequence[Any], label: str, line: int) -> None:
+        emit(new(kind, fields), label, line)
+
+    return emit_move

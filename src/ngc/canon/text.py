@@ -10,11 +10,13 @@ identity, not equality, so -0.0 never takes the text of 0.0.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any, TextIO
 
 from .ops import TEMPLATES, ArcFeed, Op, StraightFeed, StraightTraverse
 
-# The ops whose last four fields are the tail kept (see the module docstring).
+# The ops whose last four fields are the tail kept (see the module docstring): the moves, whose
+# tail starts at field 2 (a straight move) or 5 (an arc).
 _TAILED = (StraightTraverse, StraightFeed, ArcFeed)
 _TAIL = "%.4f, %.4f, %.4f, %.4f"
 _Format = tuple[str, str, int, list[Any]]
@@ -51,30 +53,49 @@ class TextSink:
         self._formats: dict[type, _Format] = {}
 
     def emit(self, op: Op, label: str, line: int) -> None:
-        count = self._count = self._count + 1
         try:
-            template, head, i, memo = self._formats[type(op)]
+            template, _, i, _ = self._formats[type(op)]
         except KeyError:
-            template, head, i, memo = self._formats[type(op)] = _format(type(op))
+            template, _, i, _ = self._formats[type(op)] = _format(type(op))
         if i:
-            z = op[i]  # type: ignore[index]
-            if z is memo[0]:
-                tail = op[i:]  # type: ignore[index]
-                last = memo[1]
-                if tail[1] is last[1] and tail[2] is last[2] and tail[3] is last[3]:
-                    text = memo[2]
-                    if text is None:
-                        text = memo[2] = _TAIL % tail
-                    self._lines.append(head % ((count, label) + op[:i] + (text,)))  # type: ignore[index]  # noqa: RUF005
-                    if not count & self.BATCH_MASK:
-                        self.flush()
-                    return
-                memo[1] = tail
-            else:
-                memo[0] = z  # (the A B C kept may be older: the text waits for a match)
-            memo[2] = None
+            self.emit_move(type(op), op, label, line)  # type: ignore[arg-type]
+            return
+        count = self._count = self._count + 1
         # (a tuple concatenation is cheaper than unpacking into a new tuple)
         self._lines.append(template % ((count, label) + op))  # type: ignore[operator]  # noqa: RUF005
+        if not count & self.BATCH_MASK:
+            self.flush()
+
+    def emit_move(self, kind: type, fields: Sequence[Any], label: str, line: int) -> None:
+        """``emit(kind(*fields), label, line)`` for a move (see :func:`ngc.canon.ops.mover`),
+        without making the op."""
+        count = self._count = self._count + 1
+        try:
+            template, head, i, memo = self._formats[kind]
+        except KeyError:
+            template, head, i, memo = self._formats[kind] = _format(kind)
+        z = fields[i]
+        if z is memo[0]:
+            last = memo[1]
+            a, b, c = fields[i + 1], fields[i + 2], fields[i + 3]
+            if a is last[1] and b is last[2] and c is last[3]:
+                text = memo[2]
+                if text is None:
+                    text = memo[2] = _TAIL % (z, a, b, c)
+                if i == 2:
+                    line_text = head % (count, label, fields[0], fields[1], text)
+                else:
+                    line_text = head % (count, label, fields[0], fields[1], fields[2], fields[3],
+                                        fields[4], text)
+                self._lines.append(line_text)
+                if not count & self.BATCH_MASK:
+                    self.flush()
+                return
+            memo[1] = (z, a, b, c)
+        else:
+            memo[0] = z  # (the A B C kept may be older: the text waits for a match)
+        memo[2] = None
+        self._lines.append(template % (count, label, *fields))
         if not count & self.BATCH_MASK:
             self.flush()
 

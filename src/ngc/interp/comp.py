@@ -38,7 +38,7 @@ from ..errors import NgcSemanticError
 from ..longdouble import HALF_PI_REST, PI_REST, TWO_PI_REST, long_sum
 
 if TYPE_CHECKING:
-    from ..canon.ops import Op, Sink
+    from ..canon.ops import Mover, Op, Sink
     from .state import State
 
 
@@ -49,6 +49,7 @@ class Machine(Protocol):
     held: list[Any]
     state: State
     sink: Sink
+    move: Mover
     label: str
     line: int
 
@@ -186,11 +187,11 @@ def flush(m: Machine) -> None:
     held = m.held
     if not held:
         return
-    emit = m.sink.emit
+    emit, move = m.sink.emit, m.move
     label, line = m.label, m.line
     for op in held:
         if type(op) is list:
-            emit(_new(op[0], op[1]), label, line)
+            move(op[0], op[1], label, line)
         else:
             emit(op, label, line)
     held.clear()
@@ -313,7 +314,7 @@ def _take(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[An
     if held:
         item = c.item
         if len(held) == 1 and held[0] is item:  # the held move alone
-            m.sink.emit(_new(item[0], item[1]), m.label, m.line)
+            m.move(item[0], item[1], m.label, m.line)
             held.clear()
         else:
             flush(m)

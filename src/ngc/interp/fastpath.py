@@ -227,9 +227,9 @@ class FastPath:
                 motion.feed(m, w, end)
             return
         if code == 0:
-            m.sink.emit(_new(ops.StraightTraverse, end), m.label, m.line)
+            m.move(ops.StraightTraverse, end, m.label, m.line)
         elif st.feed_mode == 940 and st.feed != 0.0:
-            m.sink.emit(_new(ops.StraightFeed, end), m.label, m.line)
+            m.move(ops.StraightFeed, end, m.label, m.line)
         else:
             motion.feed(m, w, end)
             return

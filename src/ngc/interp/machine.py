@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 from typing import TYPE_CHECKING, Any, TextIO
 
+from ..canon.ops import mover
 from .comp import HELD
 from .parameters import COORD_SYSTEM, Parameters
 from .state import State
@@ -23,11 +24,13 @@ if TYPE_CHECKING:
 class Machine:
     """State, parameters, the sink, and the files a program opens (logs)."""
 
-    __slots__ = ("comp", "encoding", "ended", "held", "label", "line", "log", "params", "probe_log",
-                 "sink", "state", "write_files")
+    __slots__ = ("comp", "encoding", "ended", "held", "label", "line", "log", "move", "params",
+                 "probe_log", "sink", "state", "write_files")
 
     def __init__(self, sink: Sink, write_files: bool = True) -> None:
         self.sink = sink
+        # move(kind, fields, label, line): a StraightTraverse, StraightFeed or ArcFeed to the sink
+        self.move = mover(sink)
         self.state = State()
         self.params = Parameters(self.state)
         self.params.numbered[COORD_SYSTEM] = 1.0

@@ -86,9 +86,6 @@ def relative_end(pos: list[float], w: dict[str, float]) -> list[float]:
     return end
 
 
-_new = tuple.__new__
-
-
 def traverse(it: Machine, end: list[float]) -> None:
     if it.comp is not None:
         comp.straight(it, ops.StraightTraverse, end)
@@ -109,7 +106,7 @@ def feed(it: Machine, w: dict[str, float], end: list[float]) -> None:
     if it.comp is not None:
         comp.straight(it, ops.StraightFeed, end)
         return
-    it.sink.emit(_new(ops.StraightFeed, end), it.label, it.line)
+    it.move(ops.StraightFeed, end, it.label, it.line)
     st.pos = end
 
 
@@ -183,8 +180,8 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
     if compensation is not None:
         comp.arc(it, end, c1, c2, rotation)
         return
-    it.sink.emit(_new(ops.ArcFeed, (e1, e2, c1, c2, rotation, end[helix], end[3], end[4], end[5])),
-                 it.label, it.line)
+    it.move(ops.ArcFeed, (e1, e2, c1, c2, rotation, end[helix], end[3], end[4], end[5]), it.label,
+            it.line)
     st.pos = end
 
 
