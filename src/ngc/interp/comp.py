@@ -80,7 +80,6 @@ PLANE_AXES = {170: (0, 1, 2), 180: (2, 0, 1)}
 LINE = 1
 ARC = 2
 
-_new = tuple.__new__
 _atan2 = math.atan2
 _cos = math.cos
 _sin = math.sin
@@ -241,7 +240,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     if side == 0:  # the exit move
         flush(m)
         m.comp = None
-        m.emit(_new(op_type, end))
+        m.move(op_type, end, m.label, m.line)
         m.state.pos = end
         return
     r = c.radius
@@ -467,12 +466,12 @@ def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float,
             to = pos.copy()
             to[c.a] = sa + c.shift_a
             to[c.b] = sb + c.shift_b
-            m.emit(_new(ops.StraightTraverse, to))
+            m.move(ops.StraightTraverse, to, m.label, m.line)
         else:
             h = c.h
             fields = [sa + c.shift_a, sb + c.shift_b, c.prog[c.a] + c.shift_a,
                       c.prog[c.b] + c.shift_b, -side, pos[h], pos[3], pos[4], pos[5]]
-            m.emit(_new(ops.ArcFeed, fields))
+            m.move(ops.ArcFeed, fields, m.label, m.line)
         c.ca, c.cb = sa, sb
         return
     _move_held_end(m, c, *crossing)
