@@ -73,7 +73,7 @@ class ProgramReader:
             if not piece:
                 return
             number += 1
-            if piece[-1] != 10 and len(piece) == LINE_BYTES:  # no newline: the buffer was full
+            if len(piece) == LINE_BYTES and piece[-1] != 10:  # no newline: the buffer was full
                 full += 1
                 if full > MAX_PIECES:
                     text = piece.decode(encoding, errors)
