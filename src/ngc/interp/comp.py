@@ -291,10 +291,9 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         turn -= TWO_PI
     while turn < -math.pi:  # a reversal keeps its sign
         turn += TWO_PI
-    if -SMALL <= turn <= SMALL or r == 0.0:  # a tool of no radius turns on the spot
-        if c.kind == ARC:  # (a held line may run backwards into a straight corner: no gouge)
-            check_held(c)
-    else:
+    # A straight corner (or a tool of no radius, which turns on the spot) leaves the held move as
+    # it is, and unchecked: rs274 finds no gouge there.
+    if not (-SMALL <= turn <= SMALL or r == 0.0):
         _corner(m, c, t, turn, pa + dx, pb + dy, LINE, traverse=op_type is ops.StraightTraverse)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
@@ -412,10 +411,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
         turn -= TWO_PI
     while turn < -math.pi:  # a reversal keeps its sign
         turn += TWO_PI
-    if -SMALL <= turn <= SMALL or r == 0.0:  # a tool of no radius turns on the spot
-        if c.kind == ARC:  # (a held line may run backwards into a straight corner: no gouge)
-            check_held(c)
-    else:
+    if not (-SMALL <= turn <= SMALL or r == 0.0):  # (a straight corner: as for a line)
         _corner(m, c, tangent, turn, sa, sb, ARC, c1, c2, kr, rotation, False,
                 lift * (pa - c1), lift * (pb - c2))
     # the corner moved the start (on, inside; or the held move ends a little off the circle):
@@ -459,7 +455,8 @@ def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float,
     if inside:
         crossing = _crossing(c, before, tangent, turn, sa, sb, kind, k1, k2, kr, rot, la, lb)
     if crossing is None:  # outside: an arc around the corner
-        check_held(c)
+        if c.kind == LINE or kind == LINE:  # (not an arc held before an arc)
+            check_held(c)
         flush(m)
         pos = m.state.pos
         if traverse:
