@@ -196,28 +196,6 @@ def flush(m: Machine) -> None:
     held.clear()
 
 
-def _hold(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[float]) -> None:
-    flush(m)
-    item = [op_type, fields]
-    m.held.append(item)
-    c.item = item
-    c.kind = kind
-    c.ptype = op_type
-    if c.radius == 0.0:  # a tool of no radius holds nothing back
-        flush(m)
-
-
-def _out(c: Compensation, m: Machine, end: list[float], na: float, nb: float) -> list[float]:
-    """The compensated end: the programmed end with its plane point replaced."""
-    out = end.copy()
-    out[c.a] = na + c.shift_a
-    out[c.b] = nb + c.shift_b
-    c.ca = na
-    c.cb = nb
-    m.state.pos = _shown(c, out, na, nb)
-    return out
-
-
 def _shown(c: Compensation, out: list[float], na: float, nb: float) -> list[float]:
     """The current point as rs274 shows it (#5420-#5428, #<_x>...): the compensated end before
     a lathe orientation's shift."""
@@ -256,9 +234,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         c.first = False
         c.sa, c.sb = ca, cb
         c.pdir = t
-        c.start = m.state.pos
-        _hold(m, c, LINE, op_type, _out(c, m, end, na, nb))
-        c.prog = end
+        _take(m, c, LINE, op_type, [], end, na, nb)
         return
     pa, pb = prog[a], prog[b]
     if ea == pa and eb == pb:
@@ -286,11 +262,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         n = t - HALF_PI
     # (a tool of no radius runs the programmed path: adding nothing keeps the sign of a zero)
     dx, dy = (r * _cos(n), r * _sin(n)) if r else (-0.0, -0.0)
-    turn = t - c.pdir
-    while turn > math.pi:
-        turn -= TWO_PI
-    while turn < -math.pi:  # a reversal keeps its sign
-        turn += TWO_PI
+    turn = _turn(c.pdir, t)
     # A straight corner (or a tool of no radius, which turns on the spot) leaves the held move as
     # it is, and unchecked: rs274 finds no gouge there.
     if not (-SMALL <= turn <= SMALL or r == 0.0):
@@ -304,8 +276,7 @@ def _take(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[An
           end: list[float], na: float, nb: float) -> None:
     """Emit what is held and hold the next move, which starts at the current point and is
     programmed to ``end``, with its compensated end ``na, nb``: a line (its fields are made
-    here) or an arc (``fields``, whose end is set here).  The hot path of :func:`_hold` and
-    :func:`_out`."""
+    here) or an arc (``fields``, whose end is set here)."""
     st = m.state
     c.start = st.pos
     held = m.held
@@ -316,38 +287,24 @@ def _take(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[An
             held.clear()
         else:
             flush(m)
-    a, b = c.a, c.b
     out = end.copy()
-    if c.shift_a == 0.0 and c.shift_b == 0.0:
-        out[a] = na
-        out[b] = nb
-        if kind == LINE:
-            fields = out
-        else:
-            fields[0] = na
-            fields[1] = nb
-        st.pos = out
-    else:  # shown before the lathe orientation's shift
-        shown = out.copy()
-        shown[a] = na
-        shown[b] = nb
-        st.pos = shown
-        out[a] = na + c.shift_a
-        out[b] = nb + c.shift_b
-        if kind == LINE:
-            fields = out
-        else:
-            fields[0] = out[a]
-            fields[1] = out[b]
+    oa = out[c.a] = na + c.shift_a  # (no shift adds -0.0: the point as it is)
+    ob = out[c.b] = nb + c.shift_b
+    if kind == LINE:
+        fields = out
+    else:
+        fields[0] = oa
+        fields[1] = ob
     c.ca = na
     c.cb = nb
+    st.pos = out if c.shift_a == 0.0 and c.shift_b == 0.0 else _shown(c, out, na, nb)  # (hot)
     item = [op_type, fields]
     held.append(item)
     c.item = item
     c.kind = kind
     c.ptype = op_type
     c.prog = end
-    if c.radius == 0.0:
+    if c.radius == 0.0:  # a tool of no radius holds nothing back
         flush(m)
 
 
@@ -392,11 +349,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
         # the corner after it turns from the programmed circle's direction (the moved center
         # may have crossed the end)
         c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
-        fields = _arc_fields(c, end, ra, rb, k1, k2, rotation)
-        c.start = m.state.pos
-        _hold(m, c, ARC, ops.ArcFeed, fields)
-        _out(c, m, end, ra, rb)
-        c.prog = end
+        _take(m, c, ARC, ops.ArcFeed, _arc_fields(c, end, k1, k2, rotation), end, ra, rb)
         return
     t0 = _atan2(pb - c2, pa - c1)
     kr = big_end + sign * r
@@ -406,11 +359,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     # rs274 meets a held line at the arc's start angle but the end's radius: the line moves
     # along the start's radius by the difference
     lift = (big_end - big) / big
-    turn = tangent - c.pdir
-    while turn > math.pi:
-        turn -= TWO_PI
-    while turn < -math.pi:  # a reversal keeps its sign
-        turn += TWO_PI
+    turn = _turn(c.pdir, tangent)
     if not (-SMALL <= turn <= SMALL or r == 0.0):  # (a straight corner: as for a line)
         _corner(m, c, tangent, turn, sa, sb, ARC, c1, c2, kr, rotation, False,
                 lift * (pa - c1), lift * (pb - c2))
@@ -420,10 +369,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     c.sa, c.sb = c.ca, c.cb
     c.ka, c.kb, c.kr, c.rot = c1, c2, big_end + sign * r, rotation  # its end is met at the end's radius
     c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
-    h = end[c.h]
-    _take(m, c, ARC, ops.ArcFeed,
-          [ra, rb, c1 + c.shift_a, c2 + c.shift_b, rotation, h, end[3], end[4], end[5]], end, ra,
-          rb)
+    _take(m, c, ARC, ops.ArcFeed, _arc_fields(c, end, c1, c2, rotation), end, ra, rb)
 
 
 def _end_tangent(ra: float, rb: float, rotation: int) -> float:
@@ -432,13 +378,24 @@ def _end_tangent(ra: float, rb: float, rotation: int) -> float:
     return end_angle + HALF_PI if rotation > 0 else end_angle - HALF_PI
 
 
-def _arc_fields(c: Compensation, end: list[float], ea: float, eb: float, k1: float, k2: float,
+def _arc_fields(c: Compensation, end: list[float], k1: float, k2: float,
                 rotation: int) -> list[Any]:
-    sa, sb = c.shift_a, c.shift_b
-    return [ea + sa, eb + sb, k1 + sa, k2 + sb, rotation, end[c.h], end[3], end[4], end[5]]
+    """An arc's fields around center ``k1, k2`` (its end is set by :func:`_take`)."""
+    return [0.0, 0.0, k1 + c.shift_a, k2 + c.shift_b, rotation, end[c.h], end[3], end[4], end[5]]
 
 
 # -- corners --------------------------------------------------------------------------------------
+def _turn(before: float, tangent: float) -> float:
+    """The turn from direction ``before`` to ``tangent``, within [-pi, pi] (a reversal keeps its
+    sign)."""
+    turn = tangent - before
+    while turn > math.pi:
+        turn -= TWO_PI
+    while turn < -math.pi:
+        turn += TWO_PI
+    return turn
+
+
 def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float, sb: float,
             kind: int = LINE, k1: float = 0.0, k2: float = 0.0, kr: float = 0.0, rot: int = 0,
             traverse: bool = False, la: float = 0.0, lb: float = 0.0) -> None:
