@@ -6,7 +6,8 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from .state import AXES, State
+from ..config.tooltable import length_from_program, length_to_program
+from .state import AXES, LINEAR, State
 
 Vec = list[float]
 _NO_TLO = (0.0,) * AXES
@@ -41,3 +42,15 @@ def rotate(x: float, y: float, degrees: float) -> tuple[float, float]:
     t = math.radians(degrees)
     c, s = math.cos(t), math.sin(t)
     return x * c - y * s, x * s + y * c
+
+
+def from_parameters(st: State, values: Sequence[float]) -> Vec:
+    """Axis values as parameters keep them (origins, offsets, home positions: lengths in inches,
+    through rs274's inch-per-mm factor, as tool lengths) in program units."""
+    metric = st.metric
+    return [length_to_program(v, metric) if LINEAR[i] else v for i, v in enumerate(values)]
+
+
+def to_parameter(st: State, axis: int, value: float) -> float:
+    """An axis value in program units as a parameter keeps it (see :func:`from_parameters`)."""
+    return length_from_program(value, st.metric) if LINEAR[axis] else value

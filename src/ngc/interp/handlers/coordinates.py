@@ -12,10 +12,9 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ...canon import ops
-from ...config.tooltable import length_from_program, length_to_program
 from ...errors import NgcSemanticError
 from ...language.codes import AXIS_LETTERS
-from ..frames import Vec, rotate, to_machine, to_program
+from ..frames import Vec, from_parameters, rotate, to_machine, to_parameter, to_program
 from ..parameters import (
     COORD_STRIDE,
     G28_HOME,
@@ -24,26 +23,14 @@ from ..parameters import (
     G92_APPLIED,
     G92_OFFSET,
 )
-from ..state import AXES, LINEAR
+from ..state import AXES
 from . import tools
 
 if TYPE_CHECKING:
     from ..machine import Machine
     from ..resolve import Resolved
-    from ..state import State
 
 # -- conversions ------------------------------------------------------------------------------------
-def _to_user(st: State, axis: int, value: float) -> float:
-    """A length in program units as stored in a parameter (inches, through millimetres with
-    rs274's inch-per-mm factor, as tool lengths are)."""
-    return length_from_program(value, st.metric) if LINEAR[axis] else value
-
-
-def _from_user(st: State, axis: int, value: float) -> float:
-    """A parameter's length (inches) in program units."""
-    return length_to_program(value, st.metric) if LINEAR[axis] else value
-
-
 def _axis_words(r: Resolved) -> list[tuple[int, float]]:
     w = r.w
     return [(i, w[a]) for i, a in enumerate(AXIS_LETTERS) if a in w]
@@ -74,14 +61,14 @@ def load_system(it: Machine, index: int) -> None:
     base = G54_ORIGIN + COORD_STRIDE * (index - 1)
     numbered = it.params.numbered
     st.coord_index = index
-    st.g5x = [_from_user(st, i, numbered[base + i]) for i in range(AXES)]
+    st.g5x = from_parameters(st, numbered[base:base + AXES])
     st.rotation = numbered[base + 9]
 
 
 def _stored_g92(it: Machine) -> Vec:
     """The G92 offsets #5211-#5216 hold, in program units."""
     st = it.state
-    return [_from_user(st, i, it.params.numbered[G92_OFFSET + i]) for i in range(AXES)]
+    return from_parameters(st, it.params.numbered[G92_OFFSET:G92_OFFSET + AXES])
 
 
 def load_g92(it: Machine) -> None:
@@ -133,7 +120,7 @@ def g10(it: Machine, r: Resolved) -> None:
     if l_word == 20:
         values = _l20_origin(it, values, index)
     for i, v in values.items():
-        numbered[base + i] = _to_user(st, i, v)
+        numbered[base + i] = to_parameter(st, i, v)
     if "r" in r.w:
         numbered[base + 9] = r.w["r"]
     if index != st.coord_index:
@@ -166,7 +153,7 @@ def _l20_origin(it: Machine, values: dict[int, float], index: int) -> dict[int, 
     base = G54_ORIGIN + COORD_STRIDE * (index - 1)
     numbered = it.params.numbered
     rot = numbered[base + 9]
-    origin = [_from_user(st, i, numbered[base + i]) for i in range(AXES)]
+    origin = from_parameters(st, numbered[base:base + AXES])
     local = [machine[i] - origin[i] for i in range(AXES)]
     if rot:
         local[0], local[1] = rotate(local[0], local[1], -rot)
@@ -184,7 +171,7 @@ def _store_g92(it: Machine) -> None:
     st = it.state
     numbered = it.params.numbered
     for i in range(AXES):
-        numbered[G92_OFFSET + i] = _to_user(st, i, st.g92[i])
+        numbered[G92_OFFSET + i] = to_parameter(st, i, st.g92[i])
 
 
 def g92(it: Machine, r: Resolved) -> None:
@@ -243,7 +230,7 @@ def home_store(it: Machine, code: int) -> None:
     base = G28_HOME if code == 281 else G30_HOME
     machine = _keep_machine_position(it)
     for i in range(AXES):
-        it.params.numbered[base + i] = _to_user(st, i, machine[i])
+        it.params.numbered[base + i] = to_parameter(st, i, machine[i])
 
 
 def home_targets(it: Machine, code: int, r: Resolved) -> tuple[Vec, Vec]:
@@ -257,7 +244,7 @@ def home_targets(it: Machine, code: int, r: Resolved) -> tuple[Vec, Vec]:
     base = G28_HOME if code == 280 else G30_HOME
     numbered = it.params.numbered
     words = _axis_words(r)
-    home = to_program(st, [_from_user(st, i, numbered[base + i]) for i in range(AXES)])
+    home = to_program(st, from_parameters(st, numbered[base:base + AXES]))
     middle = list(st.pos)
     for i, v in words:
         middle[i] = v if st.absolute else st.pos[i] + v

@@ -20,7 +20,7 @@ from ...canon import ops
 from ...config.tooltable import ToolEntry, length_from_program, length_to_program
 from ...errors import NgcSemanticError
 from ...language.codes import AXIS_LETTERS
-from ..frames import rotate, to_machine
+from ..frames import from_parameters, rotate, to_machine
 from ..parameters import COORD_STRIDE, G54_ORIGIN
 from ..state import AXES, LINEAR, MM_PER_INCH
 
@@ -277,8 +277,7 @@ def _measured(
     machine = to_machine(st, st.pos, rotary=True)
     base = G54_ORIGIN + COORD_STRIDE * (_G59_3 - 1)
     numbered = it.params.numbered
-    origin = [length_to_program(numbered[base + i], st.metric) if LINEAR[i] else numbered[base + i]
-              for i in range(AXES)]
+    origin = from_parameters(st, numbered[base:base + AXES])
     rotation = numbered[base + 9]
     # The point in G59.3, with the entry's offset.
     point = [machine[i] - origin[i] - (tool[i] if i < 3 else 0.0) for i in range(AXES)]
