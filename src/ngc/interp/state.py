@@ -110,7 +110,3 @@ class State:
         self.value_returned = 0.0  # #<_value_returned>: 1 if it returned one
         self.call_level = 0  # #<_call_level>: subroutine calls under way
 
-    @property
-    def units_factor(self) -> float:
-        """Program units per inch (parameters keep lengths in inches, rs274's user units)."""
-        return MM_PER_INCH if self.metric else 1.0
