@@ -109,4 +109,3 @@ class State:
         self.value = 0.0  # #<_value>: the last subroutine's return value
         self.value_returned = 0.0  # #<_value_returned>: 1 if it returned one
         self.call_level = 0  # #<_call_level>: subroutine calls under way
-
