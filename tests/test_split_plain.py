@@ -18,6 +18,8 @@ from ngc.language.parser import split_plain
     ("x1e3", ({"x": 1.0, "e": 3.0}, None, None)),  # E is a word of its own
     ("x1\t", ({"x": 1.0}, None, None)),  # white space to rs274 too
     ("x1\r", ({"x": 1.0}, None, None)),
+    ("G1 X 1 0.5 y2", ({"x": 10.5, "y": 2.0}, 1.0, None)),  # spaces dropped, letters lowered
+    ("N10 G0 Z5", ({"z": 5.0}, 0.0, "10")),
 ])
 def test_reads_plain_lines(text: str, expected: object) -> None:
     found = split_plain(text)
@@ -26,7 +28,6 @@ def test_reads_plain_lines(text: str, expected: object) -> None:
 
 @pytest.mark.parametrize("text", [
     "x1x2",  # a letter twice
-    "x1 y2",  # a space (the callers take spaces out first)
     "1x2",  # not a letter first
     "x",  # a letter without a number
     "xy1",
@@ -43,6 +44,7 @@ def test_reads_plain_lines(text: str, expected: object) -> None:
     "x1_0",  # float() takes underscores in numbers
     "x1é",
     "x1\udcff",  # a byte that is not UTF-8, kept as a surrogate
+    "X1\xc9",  # a byte past ASCII
     "xinf",  # read as I N F
 ])
 def test_leaves_the_rest_to_the_general_reader(text: str) -> None:

@@ -127,7 +127,7 @@ class FastPath:
         m = self.m
         hit = self._lines.get(raw)
         if hit is None:
-            found = split_plain(raw.replace(" ", "").lower())
+            found = split_plain(raw)
             if found is None:
                 return self.comment_line(raw, number)
             hit = self.entry(found)
@@ -239,7 +239,7 @@ class FastPath:
     def compile(self, raw: str, number: int, parse: Callable[[str, int], Block]) -> Plain | Block | Compiled:
         """A line read once for running many times: plain words, a block with a runner, or a
         block for the general path."""
-        found = split_plain(raw.replace(" ", "").lower())
+        found = split_plain(raw)
         hit = None if found is None else self.entry(found)
         if hit is not None:
             return (*hit, raw.rstrip(C_SPACE))

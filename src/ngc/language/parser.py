@@ -36,9 +36,10 @@ _LOWER = "abcdefghijklmnopqrstuvwxyz"
 # split_plain's tables: the bytes that end a number (a letter, or a byte that has no place in a
 # plain line: float() takes a form feed or \v as white space, rs274 does not), and the letters.
 _SKIPPED = "\t\n\r"
-_TO_SPACES = bytes(32 if chr(c) in _LOWER or chr(c) == "_" or c == 127
+_TO_SPACES = bytes(32 if chr(c).lower() in _LOWER or chr(c) == "_" or c == 127
                    or (c < 32 and chr(c) not in _SKIPPED) else c for c in range(256))
-_LETTERS_KEPT = bytes(c if chr(c) in _LOWER else 32 for c in range(256))
+_LOWERED = bytes(ord(chr(c).lower()) if c < 128 else c for c in range(256))
+_NOT_LETTERS = bytes(c for c in range(256) if chr(c).lower() not in _LOWER)
 _N_WORD = re.compile(r"n(\d+)(?:\.\d*)?")
 _LINE_NUMBER = re.compile(rb"(\d+)(?:\.\d*)?")
 # Letters the fast path takes: plain real-valued words (no M, no integer words, no N/O).
@@ -158,7 +159,8 @@ def _fast(block: Block, text: str, table: CodeTable) -> bool:
 
 
 def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] | None:
-    """Read a normalized line of plain words with literal numbers (the common CAM line).
+    """Read a line of plain words with literal numbers (the common CAM line), as it is read
+    from the file: spaces are dropped and letters lowered here.
 
     Cutting at the letters and letting ``float`` judge each number is the cheapest way to read
     such a line; anything unusual (expressions, parameters, comments, bad numbers, repeated or
@@ -167,13 +169,13 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
     """
     if not text.isascii():
         return None
-    # The text between the letters, and the letters: two byte translations (cheaper than a
-    # regular expression).  A byte that has no place in a plain line (a space, "_", a control
-    # character but the white space rs274 skips) cuts the line once more, so that it has not
-    # one number per letter.
+    # The text between the letters, and the letters: two byte translations, each dropping the
+    # spaces (cheaper than a regular expression).  A byte that has no place in a plain line
+    # ("_", a control character but the white space rs274 skips) cuts the line once more, so
+    # that it has not one number per letter.
     data = text.encode()
-    parts = data.translate(_TO_SPACES).split(b" ")
-    letters = b"".join(data.translate(_LETTERS_KEPT).split()).decode()
+    parts = data.translate(_TO_SPACES, b" ").split(b" ")
+    letters = data.translate(_LOWERED, _NOT_LETTERS).decode()
     if parts[0] or len(parts) != len(letters) + 1:
         return None
     digits = None
