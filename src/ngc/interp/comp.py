@@ -58,6 +58,7 @@ class Machine(Protocol):
 SMALL = 0.05  # radians: a corner closer to straight than this is neither trimmed nor rounded
 ARC_SLACK_MM = 0.0254  # see Compensation.slack
 REVERSAL = math.pi - SMALL  # a turn beyond this is a reversal: the curvatures decide its side
+PI = math.pi
 HALF_PI = math.pi / 2
 TWO_PI = 2 * math.pi
 
@@ -234,7 +235,7 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         c.first = False
         c.sa, c.sb = ca, cb
         c.pdir = t
-        _take(m, c, LINE, op_type, [], end, na, nb)
+        _take(m, c, LINE, op_type, None, end, na, nb)
         return
     pa, pb = prog[a], prog[b]
     if ea == pa and eb == pb:
@@ -262,21 +263,23 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
         n = t - HALF_PI
     # (a tool of no radius runs the programmed path: adding nothing keeps the sign of a zero)
     dx, dy = (r * _cos(n), r * _sin(n)) if r else (-0.0, -0.0)
-    turn = _turn(c.pdir, t)
+    turn = t - c.pdir
+    if turn > PI or turn < -PI:
+        turn = _turn(c.pdir, t)
     # A straight corner (or a tool of no radius, which turns on the spot) leaves the held move as
     # it is, and unchecked: rs274 finds no gouge there.
     if not (-SMALL <= turn <= SMALL or r == 0.0):
         _corner(m, c, t, turn, pa + dx, pb + dy, LINE, traverse=op_type is ops.StraightTraverse)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
-    _take(m, c, LINE, op_type, [], end, ea + dx, eb + dy)
+    _take(m, c, LINE, op_type, None, end, ea + dx, eb + dy)
 
 
-def _take(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[Any],
+def _take(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[Any] | None,
           end: list[float], na: float, nb: float) -> None:
     """Emit what is held and hold the next move, which starts at the current point and is
-    programmed to ``end``, with its compensated end ``na, nb``: a line (its fields are made
-    here) or an arc (``fields``, whose end is set here)."""
+    programmed to ``end``, with its compensated end ``na, nb``: a line (``fields`` None: they
+    are made here) or an arc (``fields``, whose end is set here)."""
     st = m.state
     c.start = st.pos
     held = m.held
@@ -290,7 +293,7 @@ def _take(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[An
     out = end.copy()
     oa = out[c.a] = na + c.shift_a  # (no shift adds -0.0: the point as it is)
     ob = out[c.b] = nb + c.shift_b
-    if kind == LINE:
+    if fields is None:
         fields = out
     else:
         fields[0] = oa
@@ -359,7 +362,9 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     # rs274 meets a held line at the arc's start angle but the end's radius: the line moves
     # along the start's radius by the difference
     lift = (big_end - big) / big
-    turn = _turn(c.pdir, tangent)
+    turn = tangent - c.pdir
+    if turn > PI or turn < -PI:
+        turn = _turn(c.pdir, tangent)
     if not (-SMALL <= turn <= SMALL or r == 0.0):  # (a straight corner: as for a line)
         _corner(m, c, tangent, turn, sa, sb, ARC, c1, c2, kr, rotation, False,
                 lift * (pa - c1), lift * (pb - c2))

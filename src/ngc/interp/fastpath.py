@@ -73,7 +73,7 @@ class Compiled(NamedTuple):
 class FastPath:
     """The plain-line shortcuts for one machine and code table."""
 
-    __slots__ = ("_arcs", "_lines", "_motion", "dispatcher", "execute", "m", "table")
+    __slots__ = ("_arcs", "_letters", "_lines", "_motion", "dispatcher", "execute", "m", "table")
 
     def __init__(self, m: Machine, table: CodeTable, execute: Callable[[Block], None],
                  dispatcher: Dispatcher) -> None:
@@ -91,6 +91,10 @@ class FastPath:
         # take the general path).
         self._arcs = {code: FREE_LETTERS | frozenset(row.uses) - {"p"} for code, row in table.g.items()
                       if code in self._motion.values() and row.uses}
+        # Motion code (None: none given) -> every letter its plain lines may carry.
+        self._letters: dict[int | None, frozenset[str]] = {
+            code: self._arcs.get(code, FREE_LETTERS) for code in self._motion.values()}
+        self._letters[None] = FREE_LETTERS
         # Raw line -> (words, motion code, N column) of a plain line, or (None, (resolved words,
         # steps), N column) of a line of literal words that moves nothing.
         self._lines: dict[str, tuple[dict[str, float] | None, Any, str]] = {}
@@ -104,7 +108,7 @@ class FastPath:
         code = None if g is None else self._motion.get(g)
         if g is not None and code is None:
             return None
-        if FREE_LETTERS.issuperset(w) or (code in self._arcs and self._arcs[code].issuperset(w)):
+        if self._letters[code].issuperset(w):
             return w, code, "N..... " if digits is None else n_label(digits)
         return None
 
