@@ -111,13 +111,13 @@ class Compensation:
         "kr",
         "pdir",
         "prog",
-        "ptype",
         "radius",
         "rot",
         "sa",
         "sb",
         "shift_a",
         "shift_b",
+        "shifted",
         "side",
         "slack",
         "start",
@@ -136,14 +136,14 @@ class Compensation:
         # (no shift is -0.0, which adds nothing: x + -0.0 is x, a -0.0 too)
         self.shift_a = -0.0 if shift is None else shift[1] * radius or -0.0
         self.shift_b = -0.0 if shift is None else shift[0] * radius or -0.0
+        self.shifted = self.shift_a != 0.0 or self.shift_b != 0.0
         # the compensated point in the plane, before the orientation's shift
         self.ca = pos[self.a]
         self.cb = pos[self.b]
-        # the held move: kind, its item in Machine.held, its canon type, its start, its
+        # the held move: kind, its item in Machine.held ([canon type, fields]), its start, its
         # programmed direction at the end (a line) or its circle (an arc)
         self.kind = 0
         self.item: list[Any] = []
-        self.ptype: type = ops.StraightFeed
         self.sa = self.sb = 0.0
         self.pdir = 0.0
         self.ka = self.kb = self.kr = 0.0
@@ -200,7 +200,7 @@ def flush(m: Machine) -> None:
 def _shown(c: Compensation, out: list[float], na: float, nb: float) -> list[float]:
     """The current point as rs274 shows it (#5420-#5428, #<_x>...): the compensated end before
     a lathe orientation's shift."""
-    if c.shift_a == 0.0 and c.shift_b == 0.0:
+    if not c.shifted:
         return out
     pos = out.copy()
     pos[c.a] = na
@@ -300,12 +300,11 @@ def _take(m: Machine, c: Compensation, kind: int, op_type: type, fields: list[An
         fields[1] = ob
     c.ca = na
     c.cb = nb
-    st.pos = out if c.shift_a == 0.0 and c.shift_b == 0.0 else _shown(c, out, na, nb)  # (hot)
+    st.pos = _shown(c, out, na, nb) if c.shifted else out
     item = [op_type, fields]
     held.append(item)
     c.item = item
     c.kind = kind
-    c.ptype = op_type
     c.prog = end
     if c.radius == 0.0:  # a tool of no radius holds nothing back
         flush(m)
@@ -607,7 +606,7 @@ def _arc_gouge() -> NoReturn:
 
 
 def _gouge(c: Compensation) -> NoReturn:
-    what = "traverse" if c.ptype is ops.StraightTraverse else "feed"
+    what = "traverse" if c.item[0] is ops.StraightTraverse else "feed"
     raise NgcSemanticError(
         f"Straight {what} in concave corner cannot be reached by the tool without gouging")
 
