@@ -354,10 +354,38 @@ def notes(results: list[ProgramResult], ref_missing: str) -> list[str]:
     return out
 
 
+def impl_python(impl: list[str]) -> str:
+    """The Python that runs the ngc command: its version and where it is installed (a virtual
+    environment's base).  The command's first word is taken as a Python, or as a script whose
+    ``#!`` line names one; otherwise (a shim, a wrapper) the Python running this script."""
+    interpreter = sys.executable
+    program = shutil.which(impl[0]) if impl else None
+    if program is not None:
+        if Path(program).name.startswith("python"):
+            interpreter = program
+        else:
+            try:
+                with open(program, "rb") as fh:
+                    first = fh.readline(512).decode("utf-8", "replace")
+            except OSError:
+                first = ""
+            words = first[2:].split() if first.startswith("#!") else []
+            if words and Path(words[0]).name.startswith("python"):
+                interpreter = words[0]
+    try:
+        found = subprocess.run(
+            [interpreter, "-c", "import platform, sys; print(platform.python_version(), sys.base_prefix)"],
+            capture_output=True, text=True, timeout=30, check=True,
+        ).stdout.split()
+    except (OSError, subprocess.SubprocessError):
+        return f"Python {platform.python_version()}"
+    return f"Python {found[0]} ({found[1]})" if len(found) == 2 else f"Python {platform.python_version()}"
+
+
 def meta(args: argparse.Namespace, impl: list[str], ref: list[str] | None) -> dict[str, Any]:
     return {
         "date": datetime.date.today().isoformat(),
-        "machine": f"{machine_name()} / Python {platform.python_version()}",
+        "machine": f"{machine_name()} / {impl_python(impl)}",
         "impl": shlex.join(impl),
         "ref": shlex.join(ref) if ref is not None else None,
         "lines": args.lines,
