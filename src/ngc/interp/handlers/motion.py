@@ -159,8 +159,13 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
         raise NgcSemanticError(f"{forbidden.upper()} word given for arc in {pname} plane")
     if "r" in w and (letters[0] in w or letters[1] in w):
         raise NgcSemanticError("Mixed radius ijk format for arc")
-    _check_arc_feed(it, w)
-    turns = int(w.get("p", 1.0))  # a whole number of turns, at least 1 (checked before the line ran)
+    if st.feed_mode != 930:  # (inverse time: the F word was checked above)
+        if st.feed == 0.0:
+            raise NgcSemanticError("Cannot make arc with zero feed rate")
+        if st.feed_mode == 950 and st.speed == 0.0:
+            raise NgcSemanticError("Cannot feed with zero spindle speed in feed per rev mode")
+    # a whole number of turns, at least 1 (checked before the line ran)
+    turns = int(w["p"]) if "p" in w else 1
     start = st.pos if compensation is None else compensation.prog
     s1, s2 = start[first], start[second]
     e1, e2 = end[first], end[second]
@@ -183,17 +188,6 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
     it.move(ops.ArcFeed, (e1, e2, c1, c2, rotation, end[helix], end[3], end[4], end[5]), it.label,
             it.line)
     st.pos = end
-
-
-def _check_arc_feed(it: Machine, w: dict[str, float]) -> None:
-    st = it.state
-    if st.feed_mode == 930:
-        if "f" not in w:
-            raise NgcSemanticError("F word missing with inverse time arc move")
-    elif st.feed == 0.0:
-        raise NgcSemanticError("Cannot make arc with zero feed rate")
-    elif st.feed_mode == 950 and st.speed == 0.0:
-        raise NgcSemanticError("Cannot feed with zero spindle speed in feed per rev mode")
 
 
 def _ijk_center(
