@@ -456,8 +456,9 @@ def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float,
 def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: float, sb: float,
               kind: int, k1: float, k2: float, kr: float, rot: int, la: float,
               lb: float) -> tuple[float, float] | None:
-    """Inside: where the two compensated paths cross (an arc's crossing is the first met going
-    back along the held arc from its end, or on along the next arc from its start); paths that
+    """Inside: where the two compensated paths cross (a line and an arc: the crossing first met
+    going back along the held arc from its end, or on along the next arc from its start; two
+    arcs: the crossing on the side their directions and the compensation's pick); paths that
     never meet cannot be cut without gouging."""
     if c.kind == LINE:
         ua, ub = _cos(before), _sin(before)
@@ -485,7 +486,10 @@ def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: f
     if points is None:
         raise NgcSemanticError(
             "Arc to arc motion makes a corner the compensated tool can't fit in without gouging")
-    return _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, points)
+    # The crossing on the left of the line from the held center to the next one when the side
+    # and the two directions multiply to a positive, else on its right (it may lie a little
+    # beyond the held end, where the circles barely cross).
+    return points[0] if c.side * c.rot * rot > 0 else points[1]
 
 
 def _line_line(c: Compensation, tangent: float) -> tuple[float, float]:
@@ -532,7 +536,8 @@ def _line_circle(pa: float, pb: float, ua: float, ub: float, k1: float, k2: floa
 
 def _circle_circle(a1: float, b1: float, r1: float, a2: float, b2: float,
                    r2: float) -> Points | None:
-    """The two points where two circles meet."""
+    """The two points where two circles meet: left, then right, of the line from the first
+    center to the second."""
     da, db = a2 - a1, b2 - b1
     d = _hypot(da, db)
     if d == 0.0 or d > r1 + r2 or d < abs(r1 - r2):
