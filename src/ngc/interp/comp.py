@@ -57,6 +57,7 @@ class Machine(Protocol):
 
 SMALL = 0.05  # radians: a corner closer to straight than this is neither trimmed nor rounded
 ARC_SLACK_MM = 0.0254  # see Compensation.slack
+WHOLE_TURN_SLIP = 1e-12  # radians: an arc turning no more than this from start to end is whole
 ENTRY_FLAT = 0.0001  # an entry arc whose chord is within this cosine of square to the radius
 REVERSAL = math.pi - SMALL  # a turn beyond this is a reversal: the curvatures decide its side
 PI = math.pi
@@ -583,10 +584,11 @@ def _bends_inside(c: Compensation, before: float, kind: int, k1: float, k2: floa
 def _sweep(k1: float, k2: float, sa: float, sb: float, ea: float, eb: float,
            rot: int) -> float:
     """The angle an arc of center ``k1, k2`` turns from ``s`` to ``e`` in its direction (a
-    whole turn when they meet)."""
+    whole turn when they meet: a whole circle's compensated start and end, found at angles
+    computed apart, may differ in their last bits)."""
     turn = (_atan2(eb - k2, ea - k1) - _atan2(sb - k2, sa - k1)) * (1 if rot > 0 else -1)
     turn %= TWO_PI
-    return turn if turn > 0.0 else TWO_PI
+    return turn if turn > WHOLE_TURN_SLIP else TWO_PI
 
 
 def _move_held_end(m: Machine, c: Compensation, xa: float, xb: float) -> None:
