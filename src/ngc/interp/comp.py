@@ -57,6 +57,8 @@ class Machine(Protocol):
 
 SMALL = 0.05  # radians: a corner closer to straight than this is neither trimmed nor rounded
 ARC_SLACK_MM = 0.0254  # see Compensation.slack
+WHOLE_TURN_SLIP = 1e-12  # radians: an arc turning no more than this from start to end is whole
+ENTRY_FLAT = 0.0001  # an entry arc whose chord is within this cosine of square to the radius
 REVERSAL = math.pi - SMALL  # a turn beyond this is a reversal: the curvatures decide its side
 PI = math.pi
 HALF_PI = math.pi / 2
@@ -323,40 +325,56 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     ea, eb = end[a], end[b]
     outward = (side > 0) == (rotation < 0)  # left of a clockwise arc, right of a counterclockwise
     sign = 1.0 if outward else -1.0
-    # A compensated point: the programmed one moved by the radius along its unit radius (which
-    # decides the sign of a zero as rs274 prints it).  The compensated circle's radius is the
-    # start's (the end's may differ a little).
     big = _hypot(pa - c1, pb - c2)
-    rr = big + sign * r
     big_end = _hypot(ea - c1, eb - c2)
-    ra = ea + sign * r * ((ea - c1) / big_end) if r else ea
-    rb = eb + sign * r * ((eb - c2) / big_end) if r else eb
-    if not outward and big <= r:
-        raise NgcSemanticError("Tool radius not less than arc radius with comp")
+    # The compensated end: the programmed one moved by the radius at the angle of its radius,
+    # taken from the center to the end (outward) or from the end to the center (inward).
+    if r:
+        th = _atan2(eb - c2, ea - c1) if outward else _atan2(c2 - eb, c1 - ea)
+        ra, rb = ea + r * _cos(th), eb + r * _sin(th)
+    else:
+        ra, rb = ea, eb
     if c.first:
         ca, cb = c.ca, c.cb
-        # The center moves along the end's radius, to where it is as far from the current
-        # point as from the compensated end.
-        ua, ub = (ea - c1) / big_end, (eb - c2) / big_end
-        k = (rr * rr - ((c1 - ca) ** 2 + (c2 - cb) ** 2)) / (
-            2 * (rr - (ua * (ca - c1) + ub * (cb - c2))))
-        k1, k2 = c1 + k * ua, c2 + k * ub
-        if _hypot(ca - k1, cb - k2) <= r:
+        if _hypot(ea - ca, eb - cb) <= r and r > 0.0:
             raise NgcSemanticError(
                 "Radius of cutter compensation entry arc is not greater than the tool radius")
+        if not outward and big <= r:
+            raise NgcSemanticError("Tool radius not less than arc radius with comp")
+        if r:
+            # The center moves along the line from the compensated end toward the programmed
+            # center, to where it is as far from the current point as from that end: half the
+            # chord over the cosine of the angle between the chord and that line.
+            toward = _atan2(c2 - rb, c1 - ra)
+            cos_a = _cos(_atan2(cb - rb, ca - ra) - toward)
+            if -ENTRY_FLAT < cos_a < ENTRY_FLAT:
+                raise NgcSemanticError("Tool radius not less than arc radius with comp")
+            kr = _hypot(cb - rb, ca - ra) / 2.0 / cos_a
+            k1, k2 = ra + kr * _cos(toward), rb + kr * _sin(toward)
+        else:
+            k1, k2, kr = c1, c2, big
         c.first = False
         c.sa, c.sb = ca, cb
-        c.ka, c.kb, c.kr, c.rot = k1, k2, abs(rr - k), rotation
+        c.ka, c.kb, c.kr, c.rot = k1, k2, abs(kr), rotation
         c.sweep = 0.0
         # the corner after it turns from the programmed circle's direction (the moved center
         # may have crossed the end)
         c.pdir = _end_tangent(ra - c1, rb - c2, rotation)
         _take(m, c, ARC, ops.ArcFeed, _arc_fields(c, end, k1, k2, rotation), end, ra, rb)
         return
+    if not outward and big <= r:
+        raise NgcSemanticError("Tool radius not less than arc radius with comp")
     t0 = _atan2(pb - c2, pa - c1)
     kr = big_end + sign * r
-    sa = pa + sign * r * ((pa - c1) / big) if r else pa
-    sb = pb + sign * r * ((pb - c2) / big) if r else pb
+    if r:
+        # The compensated start: moved by the radius at the angle from the start to the center,
+        # turned half a turn (summed in long double) when outward.
+        th = _atan2(c2 - pb, c1 - pa)
+        if outward:
+            th = long_sum(th, PI, PI_REST)
+        sa, sb = pa + r * _cos(th), pb + r * _sin(th)
+    else:
+        sa, sb = pa, pb
     tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
     # rs274 meets a held line at the arc's start angle but the end's radius: the line moves
     # along the start's radius by the difference
@@ -439,8 +457,9 @@ def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float,
 def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: float, sb: float,
               kind: int, k1: float, k2: float, kr: float, rot: int, la: float,
               lb: float) -> tuple[float, float] | None:
-    """Inside: where the two compensated paths cross (an arc's crossing is the first met going
-    back along the held arc from its end, or on along the next arc from its start); paths that
+    """Inside: where the two compensated paths cross (a line and an arc: the crossing first met
+    going back along the held arc from its end, or on along the next arc from its start; two
+    arcs: the crossing on the side their directions and the compensation's pick); paths that
     never meet cannot be cut without gouging."""
     if c.kind == LINE:
         ua, ub = _cos(before), _sin(before)
@@ -468,7 +487,10 @@ def _crossing(c: Compensation, before: float, tangent: float, turn: float, sa: f
     if points is None:
         raise NgcSemanticError(
             "Arc to arc motion makes a corner the compensated tool can't fit in without gouging")
-    return _first_on_arc(c.ka, c.kb, c.ca, c.cb, -c.rot, points)
+    # The crossing on the left of the line from the held center to the next one when the side
+    # and the two directions multiply to a positive, else on its right (it may lie a little
+    # beyond the held end, where the circles barely cross).
+    return points[0] if c.side * c.rot * rot > 0 else points[1]
 
 
 def _line_line(c: Compensation, tangent: float) -> tuple[float, float]:
@@ -515,7 +537,8 @@ def _line_circle(pa: float, pb: float, ua: float, ub: float, k1: float, k2: floa
 
 def _circle_circle(a1: float, b1: float, r1: float, a2: float, b2: float,
                    r2: float) -> Points | None:
-    """The two points where two circles meet."""
+    """The two points where two circles meet: left, then right, of the line from the first
+    center to the second."""
     da, db = a2 - a1, b2 - b1
     d = _hypot(da, db)
     if d == 0.0 or d > r1 + r2 or d < abs(r1 - r2):
@@ -561,10 +584,11 @@ def _bends_inside(c: Compensation, before: float, kind: int, k1: float, k2: floa
 def _sweep(k1: float, k2: float, sa: float, sb: float, ea: float, eb: float,
            rot: int) -> float:
     """The angle an arc of center ``k1, k2`` turns from ``s`` to ``e`` in its direction (a
-    whole turn when they meet)."""
+    whole turn when they meet: a whole circle's compensated start and end, found at angles
+    computed apart, may differ in their last bits)."""
     turn = (_atan2(eb - k2, ea - k1) - _atan2(sb - k2, sa - k1)) * (1 if rot > 0 else -1)
     turn %= TWO_PI
-    return turn if turn > 0.0 else TWO_PI
+    return turn if turn > WHOLE_TURN_SLIP else TWO_PI
 
 
 def _move_held_end(m: Machine, c: Compensation, xa: float, xb: float) -> None:
