@@ -28,9 +28,7 @@ KNOWN: dict[str, str] = {
 
 # Cases recorded ahead of the code they need, by name prefix: expected to fail until it is in;
 # not strict, so a case passes as soon as its code is there. Remove a prefix once all its cases pass.
-PENDING: dict[str, str] = {
-    "ccomp-g42.1-entry-arc-g2": "cutter radius compensation: not matched yet",
-}
+PENDING: dict[str, str] = {}
 
 
 def _pending(name: str) -> str | None:
