@@ -72,6 +72,8 @@ def add_word(words: Words, letter: str, v: float, table: CodeTable) -> None:
             raise NgcSyntaxError(f"Multiple {letter} words on one line")
         if letter in INTEGER_LETTERS:
             v = float(integer_value(v))
+            if letter == "l" and v < 0.0:
+                raise NgcSemanticError("Negative l word used")
         w[letter] = v
 
 
