@@ -23,6 +23,8 @@ def check(st: State, r: Words, table: CodeTable) -> None:
     _check_supported(st, r, table)
     non_modal = g.get(codes.G_NON_MODAL)
     motion = g.get(codes.G_MOTION)
+    if r.has_axes:
+        _check_cycle_axes(st, r, motion, table)
     if "t" in r.w and r.w["t"] < 0:
         raise NgcSemanticError("Negative tool id (tool not found)")
     if r.has_axes:
@@ -65,6 +67,16 @@ def _check_supported(st: State, r: Words, table: CodeTable) -> None:
         row = table.m[code]
         if row.handler is None and not (comp and row.comp_refusal):
             raise NgcSemanticError(f"M{code} is not supported yet")
+
+
+def _check_cycle_axes(st: State, r: Words, motion: int | None, table: CodeTable) -> None:
+    """No rotary axis word in a canned cycle (one given, or the modal one the line runs)."""
+    active = implied_motion(st, r, table) if motion is None else motion
+    if active is not None and table.g[active].cycle:
+        for letter in "abc":
+            if letter in r.w:
+                raise NgcSemanticError(f"Cannot put {'an' if letter == 'a' else 'a'} {letter} in "
+                                       "canned cycle")
 
 
 def _check_g53(st: State, r: Words, motion: int | None) -> None:

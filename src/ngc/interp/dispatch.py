@@ -18,7 +18,7 @@ from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
 from .check import implied_motion
-from .handlers import ccomp, coordinates, modes, motion, program, tools
+from .handlers import ccomp, coordinates, cycles, modes, motion, program, tools
 from .machine import Machine
 
 Handler = Callable[[Machine, Words, int], None]
@@ -115,6 +115,10 @@ _HANDLERS: dict[str, Handler] = {
     "feed": _feed,
     "arc": _arc,
     "cancel_motion": _cancel_motion,
+    "drill": cycles.drill,
+    "drill_dwell": cycles.drill_dwell,
+    "bore": cycles.bore,
+    "bore_dwell": cycles.bore_dwell,
     "stop": lambda m, r, code: program.stop(m, code),
 }
 

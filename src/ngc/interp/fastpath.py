@@ -194,12 +194,17 @@ class FastPath:
         """A plain line: F, S, then the motion (explicit or modal), as the general path runs it."""
         m = self.m
         st = m.state
-        if st.lathe_diameter and "x" in w:
-            w = {**w, "x": w["x"] / 2.0}  # G7: an X word is a diameter
         if code is None and not _AXES.isdisjoint(w):
             code = st.motion  # the modal motion the axis words run (checked before F runs)
             if code == G_CANCEL_MOTION:
                 raise NgcSemanticError("Cannot use axis values without a g code that uses them")
+            if code not in self._letters:  # a modal canned cycle: the general path runs it
+                r = words_of(w, None, self.table)
+                check(st, r, self.table)
+                self.dispatcher.convert(m, r)
+                return
+        if st.lathe_diameter and "x" in w:
+            w = {**w, "x": w["x"] / 2.0}  # G7: an X word is a diameter
         if "f" in w:
             f = w["f"]
             if f >= 0.0 and st.feed_mode == 940 and not m.held:

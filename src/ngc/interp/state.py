@@ -28,6 +28,11 @@ class State:
         "ccomp",
         "control_mode",
         "coord_index",
+        "cycle_code",
+        "cycle_level",
+        "cycle_p",
+        "cycle_r",
+        "cycle_z",
         "feed",
         "feed_hold",
         "feed_mode",
@@ -73,11 +78,21 @@ class State:
         self.arc_absolute = False  # G90.1 True, G91.1 False
         self.feed_mode = 940  # G93 930, G94 940, G95 950
         self.motion = 800  # G0 0, G1 10, G2 20, G3 30, G80 800
-        self.control_mode = 610  # G61 610, G61.1 611, G64 640
+        # rs274 starts in continuous mode, tolerance 0 (what a canned cycle restores after it)
+        self.control_mode = 640  # G61 610, G61.1 611, G64 640
         self.path_tolerance = 0.0  # G64 P
         self.naive_tolerance = 0.0  # G64 Q
         self.retract_r = True  # G99 True (R plane, as rs274 starts), G98 False
         self.ccomp = 400  # G40 400
+        # Canned cycles (handlers/cycles.py): the sticky R, Z and P words of the last cycle, as
+        # given (relative in G91; not converted by G20 / G21), and the drill axis' initial level
+        # of a series of cycles, which holds while the motion mode stays ``cycle_code``, the last
+        # cycle run.
+        self.cycle_r = 0.0
+        self.cycle_z = 0.0
+        self.cycle_p = 0.0
+        self.cycle_level = 0.0
+        self.cycle_code = -1  # none
         # Tools.  ``tools`` is the machine's tool data (slot 0: the spindle's entry).
         self.tools = Tools()
         self.tlo = [0.0] * 9  # tool length offset X Y Z A B C U V W in effect, program units

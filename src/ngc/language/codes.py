@@ -33,6 +33,7 @@ class Code(NamedTuple):
     # rs274's refusal of this code while cutter radius compensation is on, raised at its step
     # (before "not supported yet" for a code ngc does not run yet)
     comp_refusal: str = ""
+    cycle: bool = False  # a canned cycle (g-code.adoc, "G80-G89 Canned Cycles")
 
 
 # G-code modal groups (overview.adoc table "G-code Modal Groups").
@@ -117,7 +118,13 @@ def _no_motion(uses: str, comp_refusal: str) -> Code:
                 missing="All axes missing with motion code", comp_refusal=comp_refusal)
 
 
-_CYCLE_COMP = "Cannot use canned cycles with cutter compensation on"
+CYCLE_COMP = "Cannot use canned cycles with cutter compensation on"
+
+
+def _cycle(handler: str | None, uses: str) -> Code:
+    """A canned cycle: it needs an axis word, and no rotary one (see interp/check.py)."""
+    return Code(G_MOTION, STEP_MOTION, handler, uses, requires=_AXES,
+                missing="All axes missing with motion code", comp_refusal=CYCLE_COMP, cycle=True)
 _SPLINE_COMP = "Cannot convert spline with cutter radius compensation"
 _PROBE_COMP = "Cannot probe with cutter radius comp on"
 _NOT_G0_G1 = "Bug code not g0 or g1"  # rs274's words for G33.1 and G76 with compensation on
@@ -157,18 +164,18 @@ _G: dict[int, Code] = {
     383: _no_motion("", _PROBE_COMP),
     384: _no_motion("", _PROBE_COMP),
     385: _no_motion("", _PROBE_COMP),
-    730: _no_motion("rlq", _CYCLE_COMP),
+    730: _cycle(None, "rlq"),
     760: _no_motion("ijklpqrhe$", _NOT_G0_G1),
     800: _motion("cancel_motion"),
-    810: _no_motion("rl", _CYCLE_COMP),
-    820: _no_motion("rlp", _CYCLE_COMP),
-    830: _no_motion("rlq", _CYCLE_COMP),
-    840: _no_motion("rlp", _CYCLE_COMP),
-    850: _no_motion("rl", _CYCLE_COMP),
-    860: _no_motion("rlp", _CYCLE_COMP),
-    870: _no_motion("rlijk", _CYCLE_COMP),
-    880: _no_motion("rlp", _CYCLE_COMP),
-    890: _no_motion("rlp", _CYCLE_COMP),
+    810: _cycle("drill", "rl"),
+    820: _cycle("drill_dwell", "rlp"),
+    830: _cycle(None, "rlq"),
+    840: _cycle(None, "rlp"),
+    850: _cycle("bore", "rl"),
+    860: _cycle(None, "rlp"),
+    870: _cycle(None, "rlijk"),
+    880: _cycle(None, "rlp"),
+    890: _cycle("bore_dwell", "rlp"),
     # group 2: plane
     170: Code(G_PLANE, STEP_PLANE, "plane"),
     171: Code(G_PLANE, STEP_PLANE, "plane"),

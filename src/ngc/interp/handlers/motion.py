@@ -41,14 +41,14 @@ def end_point(it: Machine, w: dict[str, float], machine: bool) -> list[float]:
         target = [w.get(a, current[i]) for i, a in enumerate("xyzabc")]
         return frames.to_program(st, target)
     if "@" in w or "^" in w:
-        return _polar_end(pos, w, st.absolute)
+        return polar_end(pos, w, st.absolute)
     if st.absolute:
         return [w.get("x", pos[0]), w.get("y", pos[1]), w.get("z", pos[2]),
                 w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
     return relative_end(pos, w)
 
 
-def _polar_end(pos: list[float], w: dict[str, float], absolute: bool) -> list[float]:
+def polar_end(pos: list[float], w: dict[str, float], absolute: bool) -> list[float]:
     """@ distance and ^ angle (degrees) from the XY origin; in G91 both add to the current ones."""
     for letter in "xy":
         if letter in w:

@@ -1,0 +1,209 @@
+"""Canned cycles: G81 drilling, G82 drilling with dwell, G85 boring with feed out, G89 boring with
+dwell and feed out (g-code.adoc, "G80-G89 Canned Cycles"), in the XY, XZ and YZ planes.
+
+What rs274 does, as it shows it:
+
+* Checks, in this order: a zero feed rate, inverse time, cutter compensation on, no R word
+  (R is sticky: taken from the last cycle if the same cycle is the motion mode), L0, then by
+  plane: an X, Y or Z word in a UVW plane; no word for the drill axis (sticky as R); the R plane
+  below the bottom.
+* The drill axis' *initial level* is its position when a series of cycles began; the series
+  lasts while the motion mode stays a canned cycle (another motion code, G80 included, ends it).
+  In G91, R is relative to that level and the bottom relative to R.  If the level is below R, the
+  drill axis first goes (up or down) to R at the current point (once, whatever L), and the level
+  then is R.  In G99 a cycle that follows a cycle starts lower: from where the drill is, if that is
+  below the initial level, but not below R (not a physical height: rs274's bookkeeping).
+* Retract height ("clear"): R in G99; in G98, the level (R if that was higher).
+* Unless the path mode is G61, the cycle runs in exact-path mode and the mode in force is given
+  back after it (with the naive-CAM tolerance).
+* Each of the L repeats: a traverse in the plane at the level, a traverse to R if the level is not
+  R, the cycle's own moves, and the level becomes the clear height.  In G91 the plane's axis words
+  are offsets added on each repeat.
+* The dwell's P (G82, G89) is sticky too; P-1 counts as no P.  It is checked after the move up to R
+  and the switch to exact-path mode.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from ...canon import ops
+from ...errors import NgcSemanticError
+from ...language.codes import CYCLE_COMP
+from .. import comp
+from . import ccomp, motion
+
+if TYPE_CHECKING:
+    from ..machine import Machine
+    from ..resolve import Resolved
+
+# plane code -> (index of the drill axis, its letter, the plane's name in rs274's messages)
+_DRILL_AXES = {170: (2, "z", "xy"), 180: (1, "y", "xz"), 190: (0, "x", "yz")}
+# the UVW planes, by their names in rs274's messages
+_UVW_PLANES = {171: "UV", 181: "UW", 191: "VW"}
+_ARTICLES = {"x": "an", "y": "a", "z": "a"}
+
+# What a cycle does at the hole, given (machine, bottom, R, clear, dwell); the moves start at R.
+Body = Callable[["Machine", list[float], int, float, float, float, float], None]
+
+
+def drill(it: Machine, r: Resolved, code: int) -> None:
+    """G81: feed to the bottom, traverse to clear."""
+    _cycle(it, r, code, _drill, dwells=False)
+
+
+def drill_dwell(it: Machine, r: Resolved, code: int) -> None:
+    """G82: feed to the bottom, dwell, traverse to clear."""
+    _cycle(it, r, code, _drill_dwell, dwells=True)
+
+
+def bore(it: Machine, r: Resolved, code: int) -> None:
+    """G85: feed to the bottom, feed back to R, traverse to clear."""
+    _cycle(it, r, code, _bore, dwells=False)
+
+
+def bore_dwell(it: Machine, r: Resolved, code: int) -> None:
+    """G89: feed to the bottom, dwell, feed out to clear."""
+    _cycle(it, r, code, _bore_dwell, dwells=True)
+
+
+def _drill(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+           dwell: float) -> None:
+    _feed(it, _at(at, axis, bottom))
+    motion.traverse(it, _at(at, axis, clear))
+
+
+def _drill_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+                 dwell: float) -> None:
+    _feed(it, _at(at, axis, bottom))
+    it.emit(ops.Dwell(dwell))
+    motion.traverse(it, _at(at, axis, clear))
+
+
+def _bore(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+          dwell: float) -> None:
+    _feed(it, _at(at, axis, bottom))
+    _feed(it, _at(at, axis, rr))
+    motion.traverse(it, _at(at, axis, clear))
+
+
+def _bore_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+                dwell: float) -> None:
+    _feed(it, _at(at, axis, bottom))
+    it.emit(ops.Dwell(dwell))
+    _feed(it, _at(at, axis, clear))
+
+
+_NO_DWELL = -1.0  # rs274 reads P-1 as no P
+
+
+def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: bool) -> None:
+    st = it.state
+    w = r.w
+    if st.feed == 0.0:
+        raise NgcSemanticError("Cannot feed with zero feed rate")
+    if st.feed_mode == 930:
+        raise NgcSemanticError("Cannot use inverse time feed with canned cycles")
+    ccomp.refuse(it, CYCLE_COMP)
+    same = st.motion == code  # the same cycle again: its R, Z and P words are sticky
+    if "r" in w:
+        r_word = w["r"]
+    elif same:
+        r_word = st.cycle_r
+    else:
+        raise NgcSemanticError("R clearance plane unspecified in cycle")
+    repeats = int(w.get("l", 1.0))
+    if repeats == 0:
+        raise NgcSemanticError("Cannot do zero repeats of cycle")
+    uvw = _UVW_PLANES.get(st.plane)
+    if uvw is not None:
+        for letter in "xyz":
+            if letter in w:
+                raise NgcSemanticError(f"Cannot put {_ARTICLES[letter]} {letter.upper()} in a canned "
+                                       f"cycle in the {uvw} plane")
+        raise NgcSemanticError("All axes missing with motion code")
+    axis, letter, plane = _DRILL_AXES[st.plane]
+    if letter in w:
+        depth = w[letter]
+    elif same:
+        depth = st.cycle_z
+    else:
+        raise NgcSemanticError(f"{letter.upper()} value unspecified in {plane} plane canned cycle")
+    pos = st.pos if it.comp is None else it.comp.prog
+    series = st.motion == st.cycle_code  # a cycle follows a cycle
+    level = st.cycle_level if series else pos[axis]
+    at = list(pos)
+    steps = [0.0] * len(pos)
+    if st.absolute:
+        rr, bottom = r_word, depth
+        for i, a in enumerate("xyz"):
+            if i != axis and a in w:
+                at[i] = w[a]
+    else:
+        rr = r_word + level
+        bottom = rr + depth
+        for i, a in enumerate("xyz"):
+            if i != axis:
+                steps[i] = w.get(a, 0.0)
+    if rr < bottom:
+        raise NgcSemanticError(f"R less than {letter} in cycle in {plane} plane")
+    st.cycle_code = code
+    st.cycle_level = level
+    if series and st.retract_r:  # G99: from where the drill is, if lower, but not below R
+        level = min(level, max(pos[axis], rr))
+    if level < rr:
+        motion.traverse(it, _at(pos, axis, rr))
+        level = rr
+    clear = rr if st.retract_r else level
+    framed = st.control_mode != 610
+    if framed:
+        it.emit(ops.SetMotionControlMode("CANON_EXACT_PATH"))
+    dwell = _NO_DWELL
+    if dwells:
+        dwell = w.get("p", _NO_DWELL)
+        if dwell == _NO_DWELL:
+            if not same:
+                raise NgcSemanticError(f"Dwell time p word missing with g{code // 10}")
+            dwell = st.cycle_p
+        st.cycle_p = dwell
+    polar = "@" in w or "^" in w
+    for _ in range(repeats):
+        if polar:  # the XY point from its distance and angle (in G91: added to the current ones)
+            at[0], at[1] = motion.polar_end(at, w, st.absolute)[:2]
+        for i in range(len(at)):
+            at[i] += steps[i]
+        motion.traverse(it, _at(at, axis, level))
+        if level != rr:
+            motion.traverse(it, _at(at, axis, rr))
+        body(it, at, axis, bottom, rr, clear, dwell)
+        level = clear
+    if framed:
+        _restore_mode(it)
+    st.cycle_r = r_word
+    st.cycle_z = depth
+    st.motion = code
+
+
+def _restore_mode(it: Machine) -> None:
+    st = it.state
+    if st.control_mode == 611:
+        it.emit(ops.SetMotionControlMode("CANON_EXACT_STOP"))
+    else:
+        it.emit(ops.SetMotionControlContinuous(st.path_tolerance))
+    it.emit(ops.SetNaivecamTolerance(st.naive_tolerance))
+
+
+def _at(point: list[float], axis: int, value: float) -> list[float]:
+    """``point`` with the drill axis at ``value`` (a new list: a move keeps its end)."""
+    end = list(point)
+    end[axis] = value
+    return end
+
+
+def _feed(it: Machine, end: list[float]) -> None:
+    if it.comp is not None:
+        comp.straight(it, ops.StraightFeed, end)
+        return
+    it.move(ops.StraightFeed, end, it.label, it.line)
+    it.state.pos = end
