@@ -8,6 +8,7 @@ same text.  Kinds:
              that expose positions and offsets
 ``oword``    parameters, expressions and o-word control flow that compute toolpaths
 ``failing``  a program of another kind with one mutation meant to make it fail midway
+``cycles``   the motion programs with series of holes drilled by G81, G82, G85 and G89
 
 How it is built: a program is a preamble, a body and an ending.  The body is a sequence of
 *statements*; each kind has a table of ``(weight, function)`` entries (``MOTION``, ``OFFSETS``,
@@ -1248,6 +1249,68 @@ def _program(kind: str, seed: int, table: list[tuple[float, Callable[[Gen], None
     return g
 
 
+# ---- statements: canned cycles ------------------------------------------------------------------
+
+CYCLE_CODES = ["81", "82", "85", "89"]  # the drilling cycles ngc runs
+
+
+def st_drill(g: Gen) -> None:
+    """A series of holes with one drilling cycle: G98/G99, R above the bottom (now and then not),
+    G91 values relative to the start level and R, an L count, a few modal repeats of the cycle
+    with only hole positions, then G80 and an absolute traverse that makes the position known."""
+    if g.comp_on or g.feed_mode == "93":
+        return
+    if g.pos is None:
+        st_rapid(g)
+    first, second, normal, _, _ = PLANES[g.plane]
+    assert g.pos is not None
+    level = g.pos[normal]
+    code = g.rng.choice(CYCLE_CODES)
+    r_plane = level + g.coord(-3, 8)
+    bottom = r_plane - g.coord(0.5, 12)
+    if g.rng.random() < 0.015:
+        bottom = r_plane + g.coord(0.5, 3)  # R below the bottom: rs274's error
+    words: list[str | None] = [g.g(g.rng.choice(["98", "99"])) if g.rng.random() < 0.6 else None,
+                               g.g(code)]
+    here = {first: g.pos[first], second: g.pos[second]}
+    hole = {a: here[a] + g.coord(-30, 30) for a in (first, second) if g.rng.random() < 0.8}
+    for a in (first, second):
+        if a in hole:
+            v = hole[a] if g.absolute else hole[a] - here[a]
+            words.append(g.word(a.upper(), g.num(v)))
+    if g.absolute:
+        words += [g.word(normal.upper(), g.num(bottom)), g.word("R", g.num(r_plane))]
+    else:
+        words += [g.word(normal.upper(), g.num(bottom - r_plane)),
+                  g.word("R", g.num(r_plane - level))]
+    if code in ("82", "89") and g.rng.random() < 0.97:
+        words.append(g.word("P", g.num(g.rng.choice([0, 0.5, 1, g.rng.uniform(0, 3)]), 2)))
+    if g.rng.random() < 0.25:
+        words.append(g.word("L", str(g.rng.randint(1, 4))))
+    words.append(g.feed_word())
+    g.emit(g.words(*words))
+    for _ in range(g.rng.randint(0, 3)):  # more holes: the cycle is the motion mode
+        step = [g.word(a.upper(), g.num(g.coord(-30, 30) if not g.absolute
+                                         else g.pos[a] + g.coord(-30, 30)))
+                for a in (first, second) if g.rng.random() < 0.8]
+        if step:
+            g.emit(g.words(*step))
+    g.emit(g.words(g.g("80")))
+    g.motion = "80"
+    end = {a: g.coord(-40, 40) if a != normal else g.coord(15, 30) for a in AXES}
+    g.emit(g.words(g.g("90"), g.g("0"), *[g.word(a.upper(), g.num(end[a])) for a in AXES]))
+    g.absolute = True
+    g.motion = "0"
+    g.pos = end
+
+
+CYCLES: list[tuple[float, Callable[[Gen], None]]] = [*MOTION, (25, st_drill)]
+
+
+def gen_cycles(seed: int) -> str:
+    return text_of(_program("cycles", seed, CYCLES, 3, 25).lines)
+
+
 def gen_motion(seed: int) -> str:
     return text_of(_program("motion", seed, MOTION, 5, 40).lines)
 
@@ -1422,7 +1485,16 @@ def mu_read_order(g: Gen, lines: list[str]) -> None:
     _insert(g, lines, " ".join(parts))
 
 
+def mu_bad_cycle(g: Gen, lines: list[str]) -> None:
+    _insert(g, lines, g.rng.choice([
+        "G81 X1 Z-1", "G82 X1 Z-1 R1", "G81 X1 Z-1 R1 L0", "G81 X1 Z2 R1", "G93 G81 X1 Z-1 R1 F1",
+        "G81 X1 A1 Z-1 R1", "G41.1 D1\nG81 X1 Z-1 R1", "G18 G81 X1 Y-1 R1", "G19 G85 Y1 X2 R1",
+        "F0\nG81 X1 Z-1 R1", "G17.1 G81 X1 Z-1 R1", "G81 X1 Z-1 R1 L-2", "G89 X1 Z-1 R1 P",
+        "G82 X2 Z-3 R1 P1\nG81 X3", "G81 X1 Z-1 R1\nG0 X2\nX3"]))
+
+
 MUTATIONS: list[tuple[float, Callable[[Gen, list[str]], None]]] = [
+    (2, mu_bad_cycle),
     (2, mu_non_finite),
     (2, mu_read_order),
     (3, mu_unknown_code),
@@ -1469,6 +1541,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "failing": gen_failing,
     "tools": gen_tools,
     "comp": gen_comp,
+    "cycles": gen_cycles,
 }
 
 
