@@ -166,6 +166,13 @@ _G: dict[int, Code] = {
     385: _no_motion("", _PROBE_COMP),
     730: _cycle(None, "rlq"),
     760: _no_motion("ijklpqrhe$", _NOT_G0_G1),
+    700: _no(G_MOTION, STEP_MOTION, "qdep"),  # G70 lathe finishing cycle
+    710: _no(G_MOTION, STEP_MOTION, "qdir"),  # G71, G71.1, G71.2 lathe roughing cycles
+    711: _no(G_MOTION, STEP_MOTION, "qdir"),
+    712: _no(G_MOTION, STEP_MOTION, "qdir"),
+    720: _no(G_MOTION, STEP_MOTION, "qdir"),  # G72, G72.1, G72.2 lathe facing cycles
+    721: _no(G_MOTION, STEP_MOTION, "qdir"),
+    722: _no(G_MOTION, STEP_MOTION, "qdir"),
     800: _motion("cancel_motion"),
     810: _cycle("drill", "rl"),
     820: _cycle("drill_dwell", "rlp"),
