@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import os
 import stat
-from dataclasses import dataclass, field
+from typing import NamedTuple
 
 from .canon.ops import Sink
 from .config.ini import Ini, Rs274ngcSettings
@@ -38,8 +38,7 @@ from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
 
 
-@dataclass(frozen=True)
-class MachineOptions:
+class MachineOptions(NamedTuple):
     """The machine inputs of a command line: file names as given, ``None`` when not given."""
 
     ini_file: str | None = None
@@ -48,11 +47,10 @@ class MachineOptions:
     max_iterations: int = DEFAULT_MAX_ITERATIONS
 
 
-@dataclass(frozen=True)
-class Setup:
+class Setup(NamedTuple):
     """The machine inputs, loaded: the INI file and its settings, the parameter file's values."""
 
-    settings: Rs274ngcSettings = field(default_factory=Rs274ngcSettings)
+    settings: Rs274ngcSettings = Rs274ngcSettings()
     ini: Ini | None = None
     parameters: dict[int, float] | None = None
     tools: ToolTable = DEFAULT_TABLE

@@ -21,7 +21,6 @@ import io
 import os
 import sys
 from collections.abc import Iterable
-from dataclasses import dataclass
 from typing import TextIO
 
 from .canon import ops
@@ -101,21 +100,24 @@ GETOPT_MESSAGES = {
 }
 
 
-@dataclass
 class Rs274Options:
-    """The reference's command line, parsed."""
+    """The reference's command line, parsed (the parser sets what it reads)."""
 
-    program: str | None = None
-    output: str | None = None
-    tool_table: str | None = None
-    var_file: str | None = None
-    ini_file: str | None = None
-    on_error: int = 2  # -n: 0 continue, 1 MDI, 2 stop
-    block_delete: bool = False  # -b toggles
-    print_stack: bool = False  # -s toggles
-    batch: bool = False  # -g toggles
-    max_iterations: int = DEFAULT_MAX_ITERATIONS  # --max-iterations (ngc only)
-    help: bool = False  # -h, --help (ngc only)
+    __slots__ = ("batch", "block_delete", "help", "ini_file", "max_iterations", "on_error",
+                 "output", "print_stack", "program", "tool_table", "var_file")
+
+    def __init__(self) -> None:
+        self.program: str | None = None
+        self.output: str | None = None
+        self.tool_table: str | None = None
+        self.var_file: str | None = None
+        self.ini_file: str | None = None
+        self.on_error = 2  # -n: 0 continue, 1 MDI, 2 stop
+        self.block_delete = False  # -b toggles
+        self.print_stack = False  # -s toggles
+        self.batch = False  # -g toggles
+        self.max_iterations = DEFAULT_MAX_ITERATIONS  # --max-iterations (ngc only)
+        self.help = False  # -h, --help (ngc only)
 
     def machine(self) -> MachineOptions:
         """The machine inputs, as every command takes them."""

@@ -39,7 +39,7 @@ import math
 import os
 import re
 import stat
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from ..errors import NgcConfigError
 
@@ -138,8 +138,7 @@ def _open_nonblocking(name: str, flags: int) -> int:
     return os.open(name, flags | os.O_NONBLOCK | os.O_NOCTTY)
 
 
-@dataclass(frozen=True, slots=True)
-class Ini:
+class Ini(NamedTuple):
     """An INI file's text, searched on each lookup like rs274's reader does.
 
     >>> ini = Ini.parse("[VARS]\\nX = 10\\nX = 11\\n")
@@ -352,8 +351,7 @@ def _tolerance(ini: Ini, name: str, low: float, default: float, messages: list[s
     return value
 
 
-@dataclass(frozen=True, slots=True)
-class Rs274ngcSettings:
+class Rs274ngcSettings(NamedTuple):
     """The INI settings that change what the interpreter does, with rs274's defaults.
 
     ``Rs274ngcSettings()`` is what rs274 uses without ``-i`` (or with an INI it cannot open).
