@@ -1251,7 +1251,7 @@ def _program(kind: str, seed: int, table: list[tuple[float, Callable[[Gen], None
 
 # ---- statements: canned cycles ------------------------------------------------------------------
 
-CYCLE_CODES = ["81", "82", "85", "89"]  # the drilling cycles ngc runs
+CYCLE_CODES = ["81", "82", "84", "85", "89"]  # the drilling cycles ngc runs
 
 
 def st_drill(g: Gen) -> None:
@@ -1283,8 +1283,11 @@ def st_drill(g: Gen) -> None:
     else:
         words += [g.word(normal.upper(), g.num(bottom - r_plane)),
                   g.word("R", g.num(r_plane - level))]
-    if code in ("82", "89") and g.rng.random() < 0.97:
+    if (code in ("82", "89") and g.rng.random() < 0.97) or (code == "84" and g.rng.random() < 0.5):
         words.append(g.word("P", g.num(g.rng.choice([0, 0.5, 1, g.rng.uniform(0, 3)]), 2)))
+    if code == "84" and g.rng.random() < 0.9:  # G84 taps with the spindle turning clockwise
+        words.append("M3")
+        g.spindle_on = True
     if g.rng.random() < 0.25:
         words.append(g.word("L", str(g.rng.randint(1, 4))))
     words.append(g.feed_word())

@@ -117,6 +117,7 @@ _HANDLERS: dict[str, Handler] = {
     "cancel_motion": _cancel_motion,
     "drill": cycles.drill,
     "drill_dwell": cycles.drill_dwell,
+    "tap": cycles.tap,
     "bore": cycles.bore,
     "bore_dwell": cycles.bore_dwell,
     "stop": lambda m, r, code: program.stop(m, code),

@@ -177,7 +177,7 @@ _G: dict[int, Code] = {
     810: _cycle("drill", "rl"),
     820: _cycle("drill_dwell", "rlp"),
     830: _cycle(None, "rlq"),
-    840: _cycle(None, "rlp"),
+    840: _cycle("tap", "rlp"),
     850: _cycle("bore", "rl"),
     860: _cycle(None, "rlp"),
     870: _cycle(None, "rlijk"),

@@ -1,5 +1,6 @@
-"""Canned cycles: G81 drilling, G82 drilling with dwell, G85 boring with feed out, G89 boring with
-dwell and feed out (g-code.adoc, "G80-G89 Canned Cycles"), in the XY, XZ and YZ planes.
+"""Canned cycles: G81 drilling, G82 drilling with dwell, G84 right-hand tapping, G85 boring with
+feed out, G89 boring with dwell and feed out (g-code.adoc, "G80-G89 Canned Cycles"), in the XY, XZ
+and YZ planes.
 
 What rs274 does, as it shows it:
 
@@ -20,7 +21,13 @@ What rs274 does, as it shows it:
   R, the cycle's own moves, and the level becomes the clear height.  In G91 the plane's axis words
   are offsets added on each repeat.
 * The dwell's P (G82, G89) is sticky too; P-1 counts as no P.  It is checked after the move up to R
-  and the switch to exact-path mode.
+  and the switch to exact-path mode.  G84's P may be left out, even on its first cycle: the last
+  P of any cycle is used (0 at first).
+* G84, at each hole after the moves to it: the spindle must turn clockwise ("Spindle not turning in
+  G84", "Spindle turning counterclockwise in G84"; its speed may be 0).  Both overrides are turned
+  off, the feed in goes to the bottom, the spindle stops and turns counterclockwise, the dwell, the
+  feed out goes to clear, the spindle stops and turns clockwise, and each override that was on is
+  turned back on.  rs274 writes the two feeds' X, Y, Z turned round in the XZ and YZ planes.
 """
 
 from __future__ import annotations
@@ -50,22 +57,27 @@ Body = Callable[["Machine", list[float], int, float, float, float, float], None]
 
 def drill(it: Machine, r: Resolved, code: int) -> None:
     """G81: feed to the bottom, traverse to clear."""
-    _cycle(it, r, code, _drill, dwells=False)
+    _cycle(it, r, code, _drill, dwells=_P_NONE)
 
 
 def drill_dwell(it: Machine, r: Resolved, code: int) -> None:
     """G82: feed to the bottom, dwell, traverse to clear."""
-    _cycle(it, r, code, _drill_dwell, dwells=True)
+    _cycle(it, r, code, _drill_dwell, dwells=_P_REQUIRED)
+
+
+def tap(it: Machine, r: Resolved, code: int) -> None:
+    """G84: feed to the bottom, reverse the spindle, dwell, feed out to clear, overrides off."""
+    _cycle(it, r, code, _tap, dwells=_P_OPTIONAL)
 
 
 def bore(it: Machine, r: Resolved, code: int) -> None:
     """G85: feed to the bottom, feed back to R, traverse to clear."""
-    _cycle(it, r, code, _bore, dwells=False)
+    _cycle(it, r, code, _bore, dwells=_P_NONE)
 
 
 def bore_dwell(it: Machine, r: Resolved, code: int) -> None:
     """G89: feed to the bottom, dwell, feed out to clear."""
-    _cycle(it, r, code, _bore_dwell, dwells=True)
+    _cycle(it, r, code, _bore_dwell, dwells=_P_REQUIRED)
 
 
 def _drill(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
@@ -79,6 +91,28 @@ def _drill_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: flo
     _feed(it, _at(at, axis, bottom))
     it.emit(ops.Dwell(dwell))
     motion.traverse(it, _at(at, axis, clear))
+
+
+def _tap(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+         dwell: float) -> None:
+    st = it.state
+    if st.spindle == 0:
+        raise NgcSemanticError("Spindle not turning in G84")
+    if st.spindle < 0:
+        raise NgcSemanticError("Spindle turning counterclockwise in G84")
+    it.emit(ops.DisableFeedOverride())
+    it.emit(ops.DisableSpeedOverride(0))
+    _tap_feed(it, _at(at, axis, bottom), axis)
+    it.emit(ops.StopSpindleTurning(0))
+    it.emit(ops.StartSpindleCounterclockwise(0))
+    it.emit(ops.Dwell(dwell))
+    _tap_feed(it, _at(at, axis, clear), axis)
+    it.emit(ops.StopSpindleTurning(0))
+    it.emit(ops.StartSpindleClockwise(0))
+    if st.feed_override:  # the overrides come back as they were
+        it.emit(ops.EnableFeedOverride())
+    if st.speed_override:
+        it.emit(ops.EnableSpeedOverride(0))
 
 
 def _bore(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
@@ -96,9 +130,12 @@ def _bore_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: floa
 
 
 _NO_DWELL = -1.0  # rs274 reads P-1 as no P
+# ``dwells``: no dwell; a dwell whose P is needed unless the same cycle ran last; a dwell whose P
+# may be left out (the last P is used, 0 at first)
+_P_NONE, _P_REQUIRED, _P_OPTIONAL = 0, 1, 2
 
 
-def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: bool) -> None:
+def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int) -> None:
     st = it.state
     w = r.w
     if st.feed == 0.0:
@@ -160,10 +197,10 @@ def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: bool) -> Non
     if framed:
         it.emit(ops.SetMotionControlMode("CANON_EXACT_PATH"))
     dwell = _NO_DWELL
-    if dwells:
+    if dwells != _P_NONE:
         dwell = w.get("p", _NO_DWELL)
         if dwell == _NO_DWELL:
-            if not same:
+            if not same and dwells != _P_OPTIONAL:
                 raise NgcSemanticError(f"Dwell time p word missing with g{code // 10}")
             dwell = st.cycle_p
         st.cycle_p = dwell
@@ -206,4 +243,15 @@ def _feed(it: Machine, end: list[float]) -> None:
         comp.straight(it, ops.StraightFeed, end)
         return
     it.move(ops.StraightFeed, end, it.label, it.line)
+    it.state.pos = end
+
+
+def _tap_feed(it: Machine, end: list[float], axis: int) -> None:
+    """G84's feeds: rs274 writes their X, Y, Z turned round in the XZ plane (Y, Z, X) and the YZ
+    plane (Z, X, Y), though the tool is where it should be (the next moves start from ``end``)."""
+    shown = list(end)
+    if axis != 2:
+        turn = (1, 2, 0) if axis == 1 else (2, 0, 1)
+        shown[0:3] = [end[i] for i in turn]
+    it.move(ops.StraightFeed, shown, it.label, it.line)
     it.state.pos = end
