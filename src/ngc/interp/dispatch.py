@@ -115,6 +115,8 @@ _HANDLERS: dict[str, Handler] = {
     "feed": _feed,
     "arc": _arc,
     "cancel_motion": _cancel_motion,
+    "chip_break": cycles.chip_break,
+    "peck": cycles.peck,
     "drill": cycles.drill,
     "drill_dwell": cycles.drill_dwell,
     "tap": cycles.tap,

@@ -1,6 +1,6 @@
-"""Canned cycles: G81 drilling, G82 drilling with dwell, G84 right-hand tapping, G85 boring with
-feed out, G89 boring with dwell and feed out (g-code.adoc, "G80-G89 Canned Cycles"), in the XY, XZ
-and YZ planes.
+"""Canned cycles: G73 drilling with chip breaking, G81 drilling, G82 drilling with dwell, G83 peck
+drilling, G84 right-hand tapping, G85 boring with feed out, G89 boring with dwell and feed out
+(g-code.adoc, "G80-G89 Canned Cycles"), in the XY, XZ and YZ planes.
 
 What rs274 does, as it shows it:
 
@@ -23,6 +23,12 @@ What rs274 does, as it shows it:
 * The dwell's P (G82, G89) is sticky too; P-1 counts as no P.  It is checked after the move up to R
   and the switch to exact-path mode.  G84's P may be left out, even on its first cycle: the last
   P of any cycle is used (0 at first).
+* The peck depth's Q (G73, G83) is sticky as P is, Q-1 counting as no Q ("Q word missing with
+  g83", checked where P is).  At each hole, after the moves to it, Q must be above 0 ("Negative or
+  zero q value used").  From R, each depth is the last one less Q (in floating point, one after
+  the other) while it is above the bottom: a feed to it, then (G83) a traverse out to R, and a
+  traverse to that depth plus 0.01 in or 0.254 mm.  The last feed goes to the bottom, then a
+  traverse to clear.
 * G84, at each hole after the moves to it: the spindle must turn clockwise ("Spindle not turning in
   G84", "Spindle turning counterclockwise in G84"; its speed may be 0).  Both overrides are turned
   off, the feed in goes to the bottom, the spindle stops and turns counterclockwise, the dwell, the
@@ -51,8 +57,19 @@ _DRILL_AXES = {170: (2, "z", "xy"), 180: (1, "y", "xz"), 190: (0, "x", "yz")}
 _UVW_PLANES = {171: "UV", 181: "UW", 191: "VW"}
 _ARTICLES = {"x": "an", "y": "a", "z": "a"}
 
-# What a cycle does at the hole, given (machine, bottom, R, clear, dwell); the moves start at R.
+# What a cycle does at the hole, given (machine, point, drill axis, bottom, R, clear, dwell or peck
+# depth); the moves start at R.
 Body = Callable[["Machine", list[float], int, float, float, float, float], None]
+
+
+def chip_break(it: Machine, r: Resolved, code: int) -> None:
+    """G73: feed down by Q at a time, backing off a little between the pecks."""
+    _cycle(it, r, code, _chip_break, dwells=_P_NONE, pecks=True)
+
+
+def peck(it: Machine, r: Resolved, code: int) -> None:
+    """G83: feed down by Q at a time, out to R and back down near the last depth between pecks."""
+    _cycle(it, r, code, _peck, dwells=_P_NONE, pecks=True)
 
 
 def drill(it: Machine, r: Resolved, code: int) -> None:
@@ -93,6 +110,35 @@ def _drill_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: flo
     motion.traverse(it, _at(at, axis, clear))
 
 
+def _chip_break(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+                delta: float) -> None:
+    _pecks(it, at, axis, bottom, rr, clear, delta, out=False)
+
+
+def _peck(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+          delta: float) -> None:
+    _pecks(it, at, axis, bottom, rr, clear, delta, out=True)
+
+
+def _pecks(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+           delta: float, out: bool) -> None:
+    """Feeds down ``delta`` at a time from R (each depth the last less ``delta``, while above the
+    bottom); after each but the last, a traverse out to R if ``out``, and one to the depth plus the
+    peck clearance; the last feed goes to the bottom, then a traverse to clear."""
+    if delta <= 0.0:
+        raise NgcSemanticError("Negative or zero q value used")
+    back = _PECK_CLEARANCE_MM if it.state.metric else _PECK_CLEARANCE_INCH
+    depth = rr - delta
+    while depth > bottom:
+        _feed(it, _at(at, axis, depth))
+        if out:
+            motion.traverse(it, _at(at, axis, rr))
+        motion.traverse(it, _at(at, axis, depth + back))
+        depth -= delta
+    _feed(it, _at(at, axis, bottom))
+    motion.traverse(it, _at(at, axis, clear))
+
+
 def _tap(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
          dwell: float) -> None:
     st = it.state
@@ -129,13 +175,18 @@ def _bore_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: floa
     _feed(it, _at(at, axis, clear))
 
 
-_NO_DWELL = -1.0  # rs274 reads P-1 as no P
+_NO_DWELL = -1.0  # rs274 reads P-1 as no P, and Q-1 as no Q
+# How far above the last depth G73 and G83 go back down: rs274's defaults, which it keeps even when
+# its INI file (-i) sets G73_PECK_CLEARANCE or G83_PECK_CLEARANCE
+_PECK_CLEARANCE_INCH = 0.01
+_PECK_CLEARANCE_MM = 0.254
 # ``dwells``: no dwell; a dwell whose P is needed unless the same cycle ran last; a dwell whose P
 # may be left out (the last P is used, 0 at first)
 _P_NONE, _P_REQUIRED, _P_OPTIONAL = 0, 1, 2
 
 
-def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int) -> None:
+def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int,
+           pecks: bool = False) -> None:
     st = it.state
     w = r.w
     if st.feed == 0.0:
@@ -204,6 +255,13 @@ def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int) -> None
                 raise NgcSemanticError(f"Dwell time p word missing with g{code // 10}")
             dwell = st.cycle_p
         st.cycle_p = dwell
+    if pecks:  # the peck depth, Q, sticky as P; the body gets it instead of a dwell
+        dwell = w.get("q", _NO_DWELL)
+        if dwell == _NO_DWELL:
+            if not same:
+                raise NgcSemanticError(f"Q word missing with g{code // 10}")
+            dwell = st.cycle_q
+        st.cycle_q = dwell
     polar = "@" in w or "^" in w
     for _ in range(repeats):
         if polar:  # the XY point from its distance and angle (in G91: added to the current ones)
