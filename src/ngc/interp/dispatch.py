@@ -121,6 +121,8 @@ _HANDLERS: dict[str, Handler] = {
     "drill_dwell": cycles.drill_dwell,
     "tap": cycles.tap,
     "bore": cycles.bore,
+    "bore_stop": cycles.bore_stop,
+    "bore_manual": cycles.bore_manual,
     "bore_dwell": cycles.bore_dwell,
     "stop": lambda m, r, code: program.stop(m, code),
 }

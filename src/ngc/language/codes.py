@@ -179,9 +179,9 @@ _G: dict[int, Code] = {
     830: _cycle("peck", "rlq"),
     840: _cycle("tap", "rlp"),
     850: _cycle("bore", "rl"),
-    860: _cycle(None, "rlp"),
+    860: _cycle("bore_stop", "rlp"),
     870: _cycle(None, "rlijk"),
-    880: _cycle(None, "rlp"),
+    880: _cycle("bore_manual", "rlp"),
     890: _cycle("bore_dwell", "rlp"),
     # group 2: plane
     170: Code(G_PLANE, STEP_PLANE, "plane"),

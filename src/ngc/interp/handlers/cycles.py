@@ -1,6 +1,7 @@
 """Canned cycles: G73 drilling with chip breaking, G81 drilling, G82 drilling with dwell, G83 peck
-drilling, G84 right-hand tapping, G85 boring with feed out, G89 boring with dwell and feed out
-(g-code.adoc, "G80-G89 Canned Cycles"), in the XY, XZ and YZ planes.
+drilling, G84 right-hand tapping, G85 boring with feed out, G86 boring with spindle stop and rapid
+out, G88 boring with spindle stop and manual out, G89 boring with dwell and feed out (g-code.adoc,
+"G80-G89 Canned Cycles"), in the XY, XZ and YZ planes.
 
 What rs274 does, as it shows it:
 
@@ -20,15 +21,19 @@ What rs274 does, as it shows it:
 * Each of the L repeats: a traverse in the plane at the level, a traverse to R if the level is not
   R, the cycle's own moves, and the level becomes the clear height.  In G91 the plane's axis words
   are offsets added on each repeat.
-* The dwell's P (G82, G89) is sticky too; P-1 counts as no P.  It is checked after the move up to R
-  and the switch to exact-path mode.  G84's P may be left out, even on its first cycle: the last
-  P of any cycle is used (0 at first).
+* The dwell's P (G82, G86, G88, G89) is sticky too; P-1 counts as no P.  It is checked after the
+  move up to R and the switch to exact-path mode.  G84's P may be left out, even on its first
+  cycle: the last P of any cycle is used (0 at first).
 * The peck depth's Q (G73, G83) is sticky as P is, Q-1 counting as no Q ("Q word missing with
   g83", checked where P is).  At each hole, after the moves to it, Q must be above 0 ("Negative or
   zero q value used").  From R, each depth is the last one less Q (in floating point, one after
   the other) while it is above the bottom: a feed to it, then (G83) a traverse out to R, and a
   traverse to that depth plus 0.01 in or 0.254 mm.  The last feed goes to the bottom, then a
   traverse to clear.
+* G86 and G88, at each hole after the moves to it: the spindle must turn ("Spindle not turning in
+  g86"), either way.  The feed to the bottom, the dwell, the spindle stops; G86 traverses to
+  clear, G88 stops the program (the tool is taken out by hand, no move: rs274 then has it at
+  clear); the spindle starts again the way it turned.
 * G84, at each hole after the moves to it: the spindle must turn clockwise ("Spindle not turning in
   G84", "Spindle turning counterclockwise in G84"; its speed may be 0).  Both overrides are turned
   off, the feed in goes to the bottom, the spindle stops and turns counterclockwise, the dwell, the
@@ -85,6 +90,16 @@ def drill_dwell(it: Machine, r: Resolved, code: int) -> None:
 def tap(it: Machine, r: Resolved, code: int) -> None:
     """G84: feed to the bottom, reverse the spindle, dwell, feed out to clear, overrides off."""
     _cycle(it, r, code, _tap, dwells=_P_OPTIONAL)
+
+
+def bore_stop(it: Machine, r: Resolved, code: int) -> None:
+    """G86: feed to the bottom, dwell, stop the spindle, traverse to clear, restart the spindle."""
+    _cycle(it, r, code, _bore_stop, dwells=_P_REQUIRED)
+
+
+def bore_manual(it: Machine, r: Resolved, code: int) -> None:
+    """G88: feed to the bottom, dwell, stop the spindle, program stop (out by hand), restart it."""
+    _cycle(it, r, code, _bore_manual, dwells=_P_REQUIRED)
 
 
 def bore(it: Machine, r: Resolved, code: int) -> None:
@@ -159,6 +174,36 @@ def _tap(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clea
         it.emit(ops.EnableFeedOverride())
     if st.speed_override:
         it.emit(ops.EnableSpeedOverride(0))
+
+
+def _bore_stop(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+               dwell: float) -> None:
+    restart = _turning(it, "g86")
+    _feed(it, _at(at, axis, bottom))
+    it.emit(ops.Dwell(dwell))
+    it.emit(ops.StopSpindleTurning(0))
+    motion.traverse(it, _at(at, axis, clear))
+    it.emit(restart)
+
+
+def _bore_manual(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+                 dwell: float) -> None:
+    restart = _turning(it, "g88")
+    _feed(it, _at(at, axis, bottom))
+    it.emit(ops.Dwell(dwell))
+    it.emit(ops.StopSpindleTurning(0))
+    it.emit(ops.ProgramStop())
+    it.emit(restart)
+    it.state.pos = _at(at, axis, clear)  # the operator took the tool out: rs274 has it at clear
+
+
+def _turning(it: Machine, name: str) -> ops.StartSpindleClockwise | ops.StartSpindleCounterclockwise:
+    """The call that starts the spindle the way it turns; it must be turning."""
+    if it.state.spindle == 0:
+        raise NgcSemanticError(f"Spindle not turning in {name}")
+    if it.state.spindle > 0:
+        return ops.StartSpindleClockwise(0)
+    return ops.StartSpindleCounterclockwise(0)
 
 
 def _bore(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
