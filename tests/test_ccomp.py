@@ -77,7 +77,7 @@ def _error(text: str) -> str:
     ("g83 x1 z-1 r1 q1", "Cannot use canned cycles with cutter compensation on"),
     ("g38.2", "All axes missing with motion code"),
     # compensation turned off on the line: the code is not refused, only not supported yet
-    ("g40 g83 x30 z-1 r1 q1", "G83 is not supported yet"),
+    ("g40 g87 x30 z-1 r1 i1 j1 k1", "G87 is not supported yet"),
     ("g33 x30 k1", "G33 is not supported yet"),
 ])
 def test_codes_refused_while_compensation_is_on(line: str, message: str) -> None:

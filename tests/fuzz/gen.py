@@ -1251,7 +1251,7 @@ def _program(kind: str, seed: int, table: list[tuple[float, Callable[[Gen], None
 
 # ---- statements: canned cycles ------------------------------------------------------------------
 
-CYCLE_CODES = ["81", "82", "85", "89"]  # the drilling cycles ngc runs
+CYCLE_CODES = ["73", "81", "82", "83", "84", "85", "86", "88", "89"]  # the drilling cycles ngc runs
 
 
 def st_drill(g: Gen) -> None:
@@ -1283,8 +1283,18 @@ def st_drill(g: Gen) -> None:
     else:
         words += [g.word(normal.upper(), g.num(bottom - r_plane)),
                   g.word("R", g.num(r_plane - level))]
-    if code in ("82", "89") and g.rng.random() < 0.97:
+    p_odds = {"82": 0.97, "84": 0.5, "86": 0.97, "88": 0.97, "89": 0.97}  # G84's P is optional
+    if g.rng.random() < p_odds.get(code, 0.0):
         words.append(g.word("P", g.num(g.rng.choice([0, 0.5, 1, g.rng.uniform(0, 3)]), 2)))
+    if code in ("73", "83") and g.rng.random() < 0.97:  # the peck depth: a few to a hole, or more
+        q = g.rng.choice([g.coord(0.2, 3), (r_plane - bottom) / g.rng.randint(1, 5), 0.5])
+        words.append(g.word("Q", g.num(q if g.rng.random() < 0.98 else -q)))
+    if code == "84" and g.rng.random() < 0.9:  # G84 taps with the spindle turning clockwise
+        words.append("M3")
+        g.spindle_on = True
+    if code in ("86", "88") and g.rng.random() < 0.9:  # G86, G88: the spindle turning either way
+        words.append(g.rng.choice(["M3", "M4"]))
+        g.spindle_on = True
     if g.rng.random() < 0.25:
         words.append(g.word("L", str(g.rng.randint(1, 4))))
     words.append(g.feed_word())

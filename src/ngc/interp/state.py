@@ -31,6 +31,7 @@ class State:
         "cycle_code",
         "cycle_level",
         "cycle_p",
+        "cycle_q",
         "cycle_r",
         "cycle_z",
         "feed",
@@ -91,6 +92,7 @@ class State:
         self.cycle_r = 0.0
         self.cycle_z = 0.0
         self.cycle_p = 0.0
+        self.cycle_q = 0.0
         self.cycle_level = 0.0
         self.cycle_code = -1  # none
         # Tools.  ``tools`` is the machine's tool data (slot 0: the spindle's entry).

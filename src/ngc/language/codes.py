@@ -164,7 +164,7 @@ _G: dict[int, Code] = {
     383: _no_motion("", _PROBE_COMP),
     384: _no_motion("", _PROBE_COMP),
     385: _no_motion("", _PROBE_COMP),
-    730: _cycle(None, "rlq"),
+    730: _cycle("chip_break", "rlq"),
     760: _no_motion("ijklpqrhe$", _NOT_G0_G1),
     700: _no(G_MOTION, STEP_MOTION, "qdep"),  # G70 lathe finishing cycle
     710: _no(G_MOTION, STEP_MOTION, "qdir"),  # G71, G71.1, G71.2 lathe roughing cycles
@@ -176,12 +176,12 @@ _G: dict[int, Code] = {
     800: _motion("cancel_motion"),
     810: _cycle("drill", "rl"),
     820: _cycle("drill_dwell", "rlp"),
-    830: _cycle(None, "rlq"),
-    840: _cycle(None, "rlp"),
+    830: _cycle("peck", "rlq"),
+    840: _cycle("tap", "rlp"),
     850: _cycle("bore", "rl"),
-    860: _cycle(None, "rlp"),
+    860: _cycle("bore_stop", "rlp"),
     870: _cycle(None, "rlijk"),
-    880: _cycle(None, "rlp"),
+    880: _cycle("bore_manual", "rlp"),
     890: _cycle("bore_dwell", "rlp"),
     # group 2: plane
     170: Code(G_PLANE, STEP_PLANE, "plane"),

@@ -1,5 +1,7 @@
-"""Canned cycles: G81 drilling, G82 drilling with dwell, G85 boring with feed out, G89 boring with
-dwell and feed out (g-code.adoc, "G80-G89 Canned Cycles"), in the XY, XZ and YZ planes.
+"""Canned cycles: G73 drilling with chip breaking, G81 drilling, G82 drilling with dwell, G83 peck
+drilling, G84 right-hand tapping, G85 boring with feed out, G86 boring with spindle stop and rapid
+out, G88 boring with spindle stop and manual out, G89 boring with dwell and feed out (g-code.adoc,
+"G80-G89 Canned Cycles"), in the XY, XZ and YZ planes.
 
 What rs274 does, as it shows it:
 
@@ -19,8 +21,24 @@ What rs274 does, as it shows it:
 * Each of the L repeats: a traverse in the plane at the level, a traverse to R if the level is not
   R, the cycle's own moves, and the level becomes the clear height.  In G91 the plane's axis words
   are offsets added on each repeat.
-* The dwell's P (G82, G89) is sticky too; P-1 counts as no P.  It is checked after the move up to R
-  and the switch to exact-path mode.
+* The dwell's P (G82, G86, G88, G89) is sticky too; P-1 counts as no P.  It is checked after the
+  move up to R and the switch to exact-path mode.  G84's P may be left out, even on its first
+  cycle: the last P of any cycle is used (0 at first).
+* The peck depth's Q (G73, G83) is sticky as P is, Q-1 counting as no Q ("Q word missing with
+  g83", checked where P is).  At each hole, after the moves to it, Q must be above 0 ("Negative or
+  zero q value used").  From R, each depth is the last one less Q (in floating point, one after
+  the other) while it is above the bottom: a feed to it, then (G83) a traverse out to R, and a
+  traverse to that depth plus 0.01 in or 0.254 mm.  The last feed goes to the bottom, then a
+  traverse to clear.
+* G86 and G88, at each hole after the moves to it: the spindle must turn ("Spindle not turning in
+  g86"), either way.  The feed to the bottom, the dwell, the spindle stops; G86 traverses to
+  clear, G88 stops the program (the tool is taken out by hand, no move: rs274 then has it at
+  clear); the spindle starts again the way it turned.
+* G84, at each hole after the moves to it: the spindle must turn clockwise ("Spindle not turning in
+  G84", "Spindle turning counterclockwise in G84"; its speed may be 0).  Both overrides are turned
+  off, the feed in goes to the bottom, the spindle stops and turns counterclockwise, the dwell, the
+  feed out goes to clear, the spindle stops and turns clockwise, and each override that was on is
+  turned back on.  rs274 writes the two feeds' X, Y, Z turned round in the XZ and YZ planes.
 """
 
 from __future__ import annotations
@@ -44,28 +62,54 @@ _DRILL_AXES = {170: (2, "z", "xy"), 180: (1, "y", "xz"), 190: (0, "x", "yz")}
 _UVW_PLANES = {171: "UV", 181: "UW", 191: "VW"}
 _ARTICLES = {"x": "an", "y": "a", "z": "a"}
 
-# What a cycle does at the hole, given (machine, bottom, R, clear, dwell); the moves start at R.
+# What a cycle does at the hole, given (machine, point, drill axis, bottom, R, clear, dwell or peck
+# depth); the moves start at R.
 Body = Callable[["Machine", list[float], int, float, float, float, float], None]
+
+
+def chip_break(it: Machine, r: Resolved, code: int) -> None:
+    """G73: feed down by Q at a time, backing off a little between the pecks."""
+    _cycle(it, r, code, _chip_break, dwells=_P_NONE, pecks=True)
+
+
+def peck(it: Machine, r: Resolved, code: int) -> None:
+    """G83: feed down by Q at a time, out to R and back down near the last depth between pecks."""
+    _cycle(it, r, code, _peck, dwells=_P_NONE, pecks=True)
 
 
 def drill(it: Machine, r: Resolved, code: int) -> None:
     """G81: feed to the bottom, traverse to clear."""
-    _cycle(it, r, code, _drill, dwells=False)
+    _cycle(it, r, code, _drill, dwells=_P_NONE)
 
 
 def drill_dwell(it: Machine, r: Resolved, code: int) -> None:
     """G82: feed to the bottom, dwell, traverse to clear."""
-    _cycle(it, r, code, _drill_dwell, dwells=True)
+    _cycle(it, r, code, _drill_dwell, dwells=_P_REQUIRED)
+
+
+def tap(it: Machine, r: Resolved, code: int) -> None:
+    """G84: feed to the bottom, reverse the spindle, dwell, feed out to clear, overrides off."""
+    _cycle(it, r, code, _tap, dwells=_P_OPTIONAL)
+
+
+def bore_stop(it: Machine, r: Resolved, code: int) -> None:
+    """G86: feed to the bottom, dwell, stop the spindle, traverse to clear, restart the spindle."""
+    _cycle(it, r, code, _bore_stop, dwells=_P_REQUIRED)
+
+
+def bore_manual(it: Machine, r: Resolved, code: int) -> None:
+    """G88: feed to the bottom, dwell, stop the spindle, program stop (out by hand), restart it."""
+    _cycle(it, r, code, _bore_manual, dwells=_P_REQUIRED)
 
 
 def bore(it: Machine, r: Resolved, code: int) -> None:
     """G85: feed to the bottom, feed back to R, traverse to clear."""
-    _cycle(it, r, code, _bore, dwells=False)
+    _cycle(it, r, code, _bore, dwells=_P_NONE)
 
 
 def bore_dwell(it: Machine, r: Resolved, code: int) -> None:
     """G89: feed to the bottom, dwell, feed out to clear."""
-    _cycle(it, r, code, _bore_dwell, dwells=True)
+    _cycle(it, r, code, _bore_dwell, dwells=_P_REQUIRED)
 
 
 def _drill(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
@@ -79,6 +123,87 @@ def _drill_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: flo
     _feed(it, _at(at, axis, bottom))
     it.emit(ops.Dwell(dwell))
     motion.traverse(it, _at(at, axis, clear))
+
+
+def _chip_break(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+                delta: float) -> None:
+    _pecks(it, at, axis, bottom, rr, clear, delta, out=False)
+
+
+def _peck(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+          delta: float) -> None:
+    _pecks(it, at, axis, bottom, rr, clear, delta, out=True)
+
+
+def _pecks(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+           delta: float, out: bool) -> None:
+    """Feeds down ``delta`` at a time from R (each depth the last less ``delta``, while above the
+    bottom); after each but the last, a traverse out to R if ``out``, and one to the depth plus the
+    peck clearance; the last feed goes to the bottom, then a traverse to clear."""
+    if delta <= 0.0:
+        raise NgcSemanticError("Negative or zero q value used")
+    back = _PECK_CLEARANCE_MM if it.state.metric else _PECK_CLEARANCE_INCH
+    depth = rr - delta
+    while depth > bottom:
+        _feed(it, _at(at, axis, depth))
+        if out:
+            motion.traverse(it, _at(at, axis, rr))
+        motion.traverse(it, _at(at, axis, depth + back))
+        depth -= delta
+    _feed(it, _at(at, axis, bottom))
+    motion.traverse(it, _at(at, axis, clear))
+
+
+def _tap(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+         dwell: float) -> None:
+    st = it.state
+    if st.spindle == 0:
+        raise NgcSemanticError("Spindle not turning in G84")
+    if st.spindle < 0:
+        raise NgcSemanticError("Spindle turning counterclockwise in G84")
+    it.emit(ops.DisableFeedOverride())
+    it.emit(ops.DisableSpeedOverride(0))
+    _tap_feed(it, _at(at, axis, bottom), axis)
+    it.emit(ops.StopSpindleTurning(0))
+    it.emit(ops.StartSpindleCounterclockwise(0))
+    it.emit(ops.Dwell(dwell))
+    _tap_feed(it, _at(at, axis, clear), axis)
+    it.emit(ops.StopSpindleTurning(0))
+    it.emit(ops.StartSpindleClockwise(0))
+    if st.feed_override:  # the overrides come back as they were
+        it.emit(ops.EnableFeedOverride())
+    if st.speed_override:
+        it.emit(ops.EnableSpeedOverride(0))
+
+
+def _bore_stop(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+               dwell: float) -> None:
+    restart = _turning(it, "g86")
+    _feed(it, _at(at, axis, bottom))
+    it.emit(ops.Dwell(dwell))
+    it.emit(ops.StopSpindleTurning(0))
+    motion.traverse(it, _at(at, axis, clear))
+    it.emit(restart)
+
+
+def _bore_manual(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+                 dwell: float) -> None:
+    restart = _turning(it, "g88")
+    _feed(it, _at(at, axis, bottom))
+    it.emit(ops.Dwell(dwell))
+    it.emit(ops.StopSpindleTurning(0))
+    it.emit(ops.ProgramStop())
+    it.emit(restart)
+    it.state.pos = _at(at, axis, clear)  # the operator took the tool out: rs274 has it at clear
+
+
+def _turning(it: Machine, name: str) -> ops.StartSpindleClockwise | ops.StartSpindleCounterclockwise:
+    """The call that starts the spindle the way it turns; it must be turning."""
+    if it.state.spindle == 0:
+        raise NgcSemanticError(f"Spindle not turning in {name}")
+    if it.state.spindle > 0:
+        return ops.StartSpindleClockwise(0)
+    return ops.StartSpindleCounterclockwise(0)
 
 
 def _bore(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
@@ -95,10 +220,18 @@ def _bore_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: floa
     _feed(it, _at(at, axis, clear))
 
 
-_NO_DWELL = -1.0  # rs274 reads P-1 as no P
+_NO_DWELL = -1.0  # rs274 reads P-1 as no P, and Q-1 as no Q
+# How far above the last depth G73 and G83 go back down: rs274's defaults, which it keeps even when
+# its INI file (-i) sets G73_PECK_CLEARANCE or G83_PECK_CLEARANCE
+_PECK_CLEARANCE_INCH = 0.01
+_PECK_CLEARANCE_MM = 0.254
+# ``dwells``: no dwell; a dwell whose P is needed unless the same cycle ran last; a dwell whose P
+# may be left out (the last P is used, 0 at first)
+_P_NONE, _P_REQUIRED, _P_OPTIONAL = 0, 1, 2
 
 
-def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: bool) -> None:
+def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int,
+           pecks: bool = False) -> None:
     st = it.state
     w = r.w
     if st.feed == 0.0:
@@ -160,13 +293,20 @@ def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: bool) -> Non
     if framed:
         it.emit(ops.SetMotionControlMode("CANON_EXACT_PATH"))
     dwell = _NO_DWELL
-    if dwells:
+    if dwells != _P_NONE:
         dwell = w.get("p", _NO_DWELL)
         if dwell == _NO_DWELL:
-            if not same:
+            if not same and dwells != _P_OPTIONAL:
                 raise NgcSemanticError(f"Dwell time p word missing with g{code // 10}")
             dwell = st.cycle_p
         st.cycle_p = dwell
+    if pecks:  # the peck depth, Q, sticky as P; the body gets it instead of a dwell
+        dwell = w.get("q", _NO_DWELL)
+        if dwell == _NO_DWELL:
+            if not same:
+                raise NgcSemanticError(f"Q word missing with g{code // 10}")
+            dwell = st.cycle_q
+        st.cycle_q = dwell
     polar = "@" in w or "^" in w
     for _ in range(repeats):
         if polar:  # the XY point from its distance and angle (in G91: added to the current ones)
@@ -206,4 +346,15 @@ def _feed(it: Machine, end: list[float]) -> None:
         comp.straight(it, ops.StraightFeed, end)
         return
     it.move(ops.StraightFeed, end, it.label, it.line)
+    it.state.pos = end
+
+
+def _tap_feed(it: Machine, end: list[float], axis: int) -> None:
+    """G84's feeds: rs274 writes their X, Y, Z turned round in the XZ plane (Y, Z, X) and the YZ
+    plane (Z, X, Y), though the tool is where it should be (the next moves start from ``end``)."""
+    shown = list(end)
+    if axis != 2:
+        turn = (1, 2, 0) if axis == 1 else (2, 0, 1)
+        shown[0:3] = [end[i] for i in turn]
+    it.move(ops.StraightFeed, shown, it.label, it.line)
     it.state.pos = end
