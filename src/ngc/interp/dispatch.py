@@ -115,15 +115,7 @@ _HANDLERS: dict[str, Handler] = {
     "feed": _feed,
     "arc": _arc,
     "cancel_motion": _cancel_motion,
-    "chip_break": cycles.chip_break,
-    "peck": cycles.peck,
-    "drill": cycles.drill,
-    "drill_dwell": cycles.drill_dwell,
-    "tap": cycles.tap,
-    "bore": cycles.bore,
-    "bore_stop": cycles.bore_stop,
-    "bore_manual": cycles.bore_manual,
-    "bore_dwell": cycles.bore_dwell,
+    **{name: cycles.handler(name) for name in cycles.CYCLES},
     "stop": lambda m, r, code: program.stop(m, code),
 }
 

@@ -67,59 +67,16 @@ _ARTICLES = {"x": "an", "y": "a", "z": "a"}
 Body = Callable[["Machine", list[float], int, float, float, float, float], None]
 
 
-def chip_break(it: Machine, r: Resolved, code: int) -> None:
-    """G73: feed down by Q at a time, backing off a little between the pecks."""
-    _cycle(it, r, code, _chip_break, dwells=_P_NONE, pecks=True)
-
-
-def peck(it: Machine, r: Resolved, code: int) -> None:
-    """G83: feed down by Q at a time, out to R and back down near the last depth between pecks."""
-    _cycle(it, r, code, _peck, dwells=_P_NONE, pecks=True)
-
-
-def drill(it: Machine, r: Resolved, code: int) -> None:
-    """G81: feed to the bottom, traverse to clear."""
-    _cycle(it, r, code, _drill, dwells=_P_NONE)
-
-
-def drill_dwell(it: Machine, r: Resolved, code: int) -> None:
-    """G82: feed to the bottom, dwell, traverse to clear."""
-    _cycle(it, r, code, _drill_dwell, dwells=_P_REQUIRED)
-
-
-def tap(it: Machine, r: Resolved, code: int) -> None:
-    """G84: feed to the bottom, reverse the spindle, dwell, feed out to clear, overrides off."""
-    _cycle(it, r, code, _tap, dwells=_P_OPTIONAL)
-
-
-def bore_stop(it: Machine, r: Resolved, code: int) -> None:
-    """G86: feed to the bottom, dwell, stop the spindle, traverse to clear, restart the spindle."""
-    _cycle(it, r, code, _bore_stop, dwells=_P_REQUIRED)
-
-
-def bore_manual(it: Machine, r: Resolved, code: int) -> None:
-    """G88: feed to the bottom, dwell, stop the spindle, program stop (out by hand), restart it."""
-    _cycle(it, r, code, _bore_manual, dwells=_P_REQUIRED)
-
-
-def bore(it: Machine, r: Resolved, code: int) -> None:
-    """G85: feed to the bottom, feed back to R, traverse to clear."""
-    _cycle(it, r, code, _bore, dwells=_P_NONE)
-
-
-def bore_dwell(it: Machine, r: Resolved, code: int) -> None:
-    """G89: feed to the bottom, dwell, feed out to clear."""
-    _cycle(it, r, code, _bore_dwell, dwells=_P_REQUIRED)
-
-
 def _drill(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
            dwell: float) -> None:
+    """G81: feed to the bottom, traverse to clear."""
     _feed(it, _at(at, axis, bottom))
     motion.traverse(it, _at(at, axis, clear))
 
 
 def _drill_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
                  dwell: float) -> None:
+    """G82: feed to the bottom, dwell, traverse to clear."""
     _feed(it, _at(at, axis, bottom))
     it.emit(ops.Dwell(dwell))
     motion.traverse(it, _at(at, axis, clear))
@@ -127,11 +84,13 @@ def _drill_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: flo
 
 def _chip_break(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
                 delta: float) -> None:
+    """G73: feed down by Q at a time, backing off a little between the pecks."""
     _pecks(it, at, axis, bottom, rr, clear, delta, out=False)
 
 
 def _peck(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
           delta: float) -> None:
+    """G83: feed down by Q at a time, out to R and back down near the last depth between pecks."""
     _pecks(it, at, axis, bottom, rr, clear, delta, out=True)
 
 
@@ -156,6 +115,7 @@ def _pecks(it: Machine, at: list[float], axis: int, bottom: float, rr: float, cl
 
 def _tap(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
          dwell: float) -> None:
+    """G84: feed to the bottom, reverse the spindle, dwell, feed out to clear, overrides off."""
     st = it.state
     if st.spindle == 0:
         raise NgcSemanticError("Spindle not turning in G84")
@@ -178,6 +138,7 @@ def _tap(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clea
 
 def _bore_stop(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
                dwell: float) -> None:
+    """G86: feed to the bottom, dwell, stop the spindle, traverse to clear, restart the spindle."""
     restart = _turning(it, "g86")
     _feed(it, _at(at, axis, bottom))
     it.emit(ops.Dwell(dwell))
@@ -188,6 +149,7 @@ def _bore_stop(it: Machine, at: list[float], axis: int, bottom: float, rr: float
 
 def _bore_manual(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
                  dwell: float) -> None:
+    """G88: feed to the bottom, dwell, stop the spindle, program stop (out by hand), restart it."""
     restart = _turning(it, "g88")
     _feed(it, _at(at, axis, bottom))
     it.emit(ops.Dwell(dwell))
@@ -208,6 +170,7 @@ def _turning(it: Machine, name: str) -> ops.StartSpindleClockwise | ops.StartSpi
 
 def _bore(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
           dwell: float) -> None:
+    """G85: feed to the bottom, feed back to R, traverse to clear."""
     _feed(it, _at(at, axis, bottom))
     _feed(it, _at(at, axis, rr))
     motion.traverse(it, _at(at, axis, clear))
@@ -215,6 +178,7 @@ def _bore(it: Machine, at: list[float], axis: int, bottom: float, rr: float, cle
 
 def _bore_dwell(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
                 dwell: float) -> None:
+    """G89: feed to the bottom, dwell, feed out to clear."""
     _feed(it, _at(at, axis, bottom))
     it.emit(ops.Dwell(dwell))
     _feed(it, _at(at, axis, clear))
@@ -231,7 +195,7 @@ _P_NONE, _P_REQUIRED, _P_OPTIONAL = 0, 1, 2
 
 
 def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int,
-           pecks: bool = False) -> None:
+           pecks: bool) -> None:
     st = it.state
     w = r.w
     if st.feed == 0.0:
@@ -358,3 +322,28 @@ def _tap_feed(it: Machine, end: list[float], axis: int) -> None:
         shown[0:3] = [end[i] for i in turn]
     it.move(ops.StraightFeed, shown, it.label, it.line)
     it.state.pos = end
+
+
+# The handler of each cycle in the code table: what it does at the hole, how it takes P, whether
+# it takes Q.
+CYCLES: dict[str, tuple[Body, int, bool]] = {
+    "chip_break": (_chip_break, _P_NONE, True),  # G73
+    "drill": (_drill, _P_NONE, False),  # G81
+    "drill_dwell": (_drill_dwell, _P_REQUIRED, False),  # G82
+    "peck": (_peck, _P_NONE, True),  # G83
+    "tap": (_tap, _P_OPTIONAL, False),  # G84
+    "bore": (_bore, _P_NONE, False),  # G85
+    "bore_stop": (_bore_stop, _P_REQUIRED, False),  # G86
+    "bore_manual": (_bore_manual, _P_REQUIRED, False),  # G88
+    "bore_dwell": (_bore_dwell, _P_REQUIRED, False),  # G89
+}
+
+
+def handler(name: str) -> Callable[[Machine, Resolved, int], None]:
+    """The step of the cycle ``name`` names in the code table (see :data:`CYCLES`)."""
+    body, dwells, pecks = CYCLES[name]
+
+    def run(it: Machine, r: Resolved, code: int) -> None:
+        _cycle(it, r, code, body, dwells, pecks)
+
+    return run
