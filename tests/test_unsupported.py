@@ -12,7 +12,6 @@ from ngc.language.codes import LINUXCNC, g_name
 # A line using each code with the words it takes, after an S word and M8 that would run first if the block
 # were executed in part.
 LINES = {
-    "G96": "G96 D2000",
     "G5": "G5 X1 Y1 I0.5 J0.5 P0.5 Q0.5", "G5.1": "G5.1 X1 Y1 I0.5 J0.5",
     "G5.2": "G5.2 X1 Y1 P1 L3", "G33": "G33 Z-1 K0.1", "G33.1": "G33.1 Z-1 K0.1",
     "G38.2": "G38.2 Z-1 F10", "G38.3": "G38.3 Z-1 F10", "G38.4": "G38.4 Z-1 F10",
@@ -21,7 +20,7 @@ LINES = {
     "G71.1": "G71.1 Q100 D0.5", "G71.2": "G71.2 Q100 D0.5", "G72": "G72 Q100 D0.5",
     "G72.1": "G72.1 Q100 D0.5", "G72.2": "G72.2 Q100 D0.5",
     "G87": "G87 X1 Y1 Z-1 R1 I1 J1 K1 F10",
-    "M19": "M19 R90 Q1 P0", "M62": "M62 P1", "M63": "M63 P1",
+    "M62": "M62 P1", "M63": "M63 P1",
     "M64": "M64 P1", "M65": "M65 P1", "M66": "M66 P0 L0", "M67": "M67 E0 Q1", "M68": "M68 E0 Q1",
     "M70": "M70", "M71": "M71", "M72": "M72", "M73": "M73",
 }

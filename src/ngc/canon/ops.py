@@ -206,6 +206,36 @@ class SetSpindleMode(NamedTuple):
     css_max: float
 
 
+class OrientSpindle(NamedTuple):
+    spindle: int
+    degrees: float
+    direction: int  # M19 P: 0 shortest, 1 clockwise, 2 counterclockwise
+
+
+class WaitOrientComplete(NamedTuple):
+    spindle: int
+    seconds: float
+
+
+class StartSpeedFeedSync(NamedTuple):
+    """Spindle-synchronized motion (G33, G33.1, G76): ``per_rev`` units per revolution."""
+
+    per_rev: float
+    css: int  # 1 in G96 constant surface speed
+
+
+class StopSpeedFeedSynch(NamedTuple):
+    """No arguments."""
+
+
+class RigidTap(NamedTuple):
+    """G33.1: synchronized to the point and back."""
+
+    x: float
+    y: float
+    z: float
+
+
 class MistOn(NamedTuple):
     """No arguments."""
 
@@ -335,6 +365,11 @@ TEMPLATES: Mapping[type, str] = MappingProxyType(
         StartSpindleCounterclockwise: "START_SPINDLE_COUNTERCLOCKWISE(%d)",
         StopSpindleTurning: "STOP_SPINDLE_TURNING(%d)",
         SetSpindleMode: "SET_SPINDLE_MODE(%d %.4f)",
+        OrientSpindle: "ORIENT_SPINDLE(%d, %.4f, %d)",
+        WaitOrientComplete: "SPINDLE.%d.WAIT_ORIENT_COMPLETE(%.4f)",
+        StartSpeedFeedSync: "START_SPEED_FEED_SYNC(%f,%d)",
+        StopSpeedFeedSynch: "STOP_SPEED_FEED_SYNCH()",
+        RigidTap: "RIGID_TAP(%.4f, %.4f, %.4f)",
         MistOn: "MIST_ON()",
         MistOff: "MIST_OFF()",
         FloodOn: "FLOOD_ON()",

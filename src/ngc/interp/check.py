@@ -11,6 +11,7 @@ from ..errors import NgcSemanticError, NgcSyntaxError
 from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
+from .handlers import spindle
 from .state import State
 
 _G10_L = (0.0, 1.0, 2.0, 10.0, 11.0, 20.0)
@@ -36,6 +37,8 @@ def check(st: State, r: Words, table: CodeTable) -> None:
         _check_other_words(r, active, table)
         if "p" in r.w and active in _ARCS:
             _check_turns(r.w["p"])
+        if r.m.get(codes.M_SPINDLE) == 19:
+            spindle.check_orient(r.w)
     for code in g.values():
         row = table.g[code]
         if row.requires and not any(letter in r.w for letter in row.requires):
@@ -112,11 +115,11 @@ def _check_other_words(r: Words, active: int | None, table: CodeTable) -> None:
     used += "".join(table.m[code].uses for code in r.m.values())
     if active is not None and codes.G_MOTION not in r.g:
         used += table.g[active].uses
+    if "s" in w:
+        used += "$"  # S takes a spindle number too
     for letter, message in codes.UNUSED_WORD_MESSAGES:
         if letter in w and letter not in used:
             raise NgcSemanticError(message)
-    if "$" in w:
-        raise NgcSemanticError("$ words (spindle selection) are not supported yet")
 
 
 def _check_turns(p: float) -> None:

@@ -18,7 +18,7 @@ from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
 from .check import implied_motion
-from .handlers import ccomp, coordinates, cycles, modes, motion, program, tools
+from .handlers import ccomp, coordinates, cycles, modes, motion, program, spindle, tools
 from .machine import Machine
 
 Handler = Callable[[Machine, Words, int], None]
@@ -33,7 +33,16 @@ def _feed_rate(m: Machine, r: Words, code: int) -> None:
 
 
 def _spindle_speed(m: Machine, r: Words, code: int) -> None:
-    modes.spindle_speed(m, r.w["s"])
+    if "$" in r.w:
+        spindle.speed(m, r.w)
+    else:
+        modes.spindle_speed(m, r.w["s"])
+
+
+def _overrides(m: Machine, r: Words, code: int) -> None:
+    if code == 51:
+        spindle.check_override(r.w)
+    modes.overrides(m, code, r.w.get("p"))
 
 
 def _traverse(m: Machine, r: Words, code: int) -> None:
@@ -84,9 +93,11 @@ _HANDLERS: dict[str, Handler] = {
     "feed_rate": _feed_rate,
     "spindle_speed": _spindle_speed,
     "feed_mode": lambda m, r, code: modes.feed_mode(m, code),
-    "spindle": lambda m, r, code: modes.spindle(m, code),
+    "spindle": lambda m, r, code: spindle.turn(m, r.w, code),
+    "speed_mode": lambda m, r, code: spindle.speed_mode(m, r.w, code),
+    "orient": lambda m, r, code: spindle.orient(m, r.w),
     "coolant": lambda m, r, code: modes.coolant(m, code),
-    "overrides": lambda m, r, code: modes.overrides(m, code, r.w.get("p")),
+    "overrides": _overrides,
     "subprogram": _subprogram,
     "dwell": lambda m, r, code: modes.dwell(m, r),
     "plane": lambda m, r, code: modes.plane(m, code),

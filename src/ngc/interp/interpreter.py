@@ -129,6 +129,7 @@ class Interpreter:
         self.flow.subroutine_path = list(settings.subroutine_path)
         self.flow.fanuc_enabled = not settings.disable_fanuc_style_sub
         self.params.ini = ini if settings.ini_vars else None
+        self.state.orient_offset = settings.orient_offset
 
     def load_parameters(self, values: dict[int, float], disable_g92: bool = False) -> None:
         """Parameters read from a parameter file, and the origins and offsets they hold."""

@@ -28,6 +28,8 @@ class State:
         "ccomp",
         "control_mode",
         "coord_index",
+        "css",
+        "css_max",
         "cycle_code",
         "cycle_level",
         "cycle_p",
@@ -48,6 +50,7 @@ class State:
         "mist",
         "motion",
         "naive_tolerance",
+        "orient_offset",
         "path_tolerance",
         "plane",
         "pos",
@@ -114,7 +117,10 @@ class State:
         self.lathe_diameter = False  # G7
         self.feed = 0.0  # F
         self.speed = 0.0  # S
-        self.spindle = 0  # M3 1, M4 -1, M5 0
+        self.spindle = 0  # M3 1, M4 -1, M5 0 (and M19: orienting, not turning)
+        self.css = False  # G96 True, G97 False
+        self.css_max = 0.0  # G96 D: the maximum rpm in constant surface speed
+        self.orient_offset = 0.0  # M19: [RS274NGC]ORIENT_OFFSET, degrees added to R
         self.mist = False  # M7 / M9
         self.flood = False  # M8 / M9
         self.feed_override = True  # M48 / M49 / M50

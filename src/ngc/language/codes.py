@@ -88,7 +88,9 @@ STEP_UNITS = 15
 STEP_LATHE = 16
 STEP_CUTTER_COMP = 17
 STEP_TOOL_LENGTH = 18
-STEP_SPINDLE_MODE = 19
+# G96 / G97 run right after the comment, before the feed mode (as rs274 runs them; the list's
+# place for them is wrong): a step shared with the comment, which is planned first.
+STEP_SPINDLE_MODE = STEP_COMMENT
 STEP_COORD_SYSTEM = 20
 STEP_CONTROL = 21
 STEP_DISTANCE = 22
@@ -198,7 +200,7 @@ _G: dict[int, Code] = {
     # group 5: feed mode
     930: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode"),
     940: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode"),
-    950: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode", "$"),
+    950: Code(G_FEED_MODE, STEP_FEED_MODE, "feed_mode"),
     # group 6: units
     200: Code(G_UNITS, STEP_UNITS, "units"),
     210: Code(G_UNITS, STEP_UNITS, "units"),
@@ -233,8 +235,9 @@ _G: dict[int, Code] = {
     611: Code(G_CONTROL, STEP_CONTROL, "control_mode"),
     640: Code(G_CONTROL, STEP_CONTROL, "control_mode", "pq"),
     # group 14: spindle speed mode
-    960: _no(G_SPINDLE_MODE, STEP_SPINDLE_MODE, "d$"),
-    970: Code(G_SPINDLE_MODE, STEP_SPINDLE_MODE, "", "$"),  # G97: the mode rs274 starts in
+    960: Code(G_SPINDLE_MODE, STEP_SPINDLE_MODE, "speed_mode", "d$", requires="s",
+              missing="S word missing with G96"),
+    970: Code(G_SPINDLE_MODE, STEP_SPINDLE_MODE, "speed_mode"),  # G97: the mode rs274 starts in
     # group 15: lathe diameter / radius mode
     70: Code(G_LATHE, STEP_LATHE, "lathe_mode"),
     80: Code(G_LATHE, STEP_LATHE, "lathe_mode"),
@@ -249,7 +252,7 @@ _M: dict[int, Code] = {
     3: Code(M_SPINDLE, STEP_SPINDLE, "spindle", "$"),
     4: Code(M_SPINDLE, STEP_SPINDLE, "spindle", "$"),
     5: Code(M_SPINDLE, STEP_SPINDLE, "spindle", "$"),
-    19: _no(M_SPINDLE, STEP_SPINDLE, "rpq$"),
+    19: Code(M_SPINDLE, STEP_SPINDLE, "orient", "rpq$"),
     6: Code(M_TOOL, STEP_TOOL_CHANGE, "change_tool"),
     61: Code(M_TOOL, STEP_TOOL_CHANGE, "set_tool_number", "q"),
     7: Code(M_COOLANT, STEP_COOLANT, "coolant"),

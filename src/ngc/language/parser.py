@@ -9,6 +9,7 @@ messages are rs274's: overview.adoc "Format of a line", "Numbers", "Parameters",
 from __future__ import annotations
 
 import re
+from types import MappingProxyType
 
 from ..errors import NgcError, NgcRuntimeError, NgcSyntaxError
 from . import expressions as ex
@@ -23,7 +24,7 @@ from .oword import (
     OWord,
     number_label,
 )
-from .words import Words, add_word, integer_value
+from .words import Words, add_word, check_signs, integer_value
 
 WORD = 0
 PARAM = 1
@@ -32,6 +33,8 @@ COMMENT = 2
 Item = tuple[int, object, object]
 
 _LETTERS = "abcdefghijklmpqrstxyz$"
+# How rs274 names a repeated word that is not named by its letter.
+_WORD_NAMES = MappingProxyType({"$": "spindle choice ($)"})
 _LOWER = "abcdefghijklmnopqrstuvwxyz"
 # split_plain's tables: the bytes that end a number (a letter, or a byte that has no place in a
 # plain line: float() takes a form feed or \v as white space, rs274 does not), and the letters.
@@ -202,6 +205,7 @@ def words_of(w: dict[str, float], g: float | None, table: CodeTable) -> Words:
     words = Words()
     if g is not None:
         add_word(words, "g", g, table)
+    check_signs(w)
     words.w = w
     return words.finish()
 
@@ -280,7 +284,7 @@ class _Reader:
                 items.append(self.read_parameter_setting())
             elif c in _LETTERS or c in POLAR_LETTERS:
                 if c in seen:
-                    raise self.error(f"Multiple {c} words on one line")
+                    raise self.error(f"Multiple {_WORD_NAMES.get(c, c)} words on one line")
                 if c not in "gm":
                     seen.add(c)
                 self.i += 1

@@ -9,12 +9,15 @@ dialect's code table — shared by the parser's constant lines and the interpret
 from __future__ import annotations
 
 import math
+from types import MappingProxyType
 
 from ..errors import NgcSemanticError, NgcSyntaxError
 from .codes import AXIS_LETTERS, FREE_LETTERS, G_CANCEL_MOTION, G_MOTION, POLAR_LETTERS, CodeTable
 
 INTEGER_LETTERS = frozenset("hlt")  # D is a real: a diameter for G41.1/G42.1, a speed for G96
 _AXES = frozenset(AXIS_LETTERS + POLAR_LETTERS)
+# Words rs274 refuses negative as it reads them (so before any check of the line).
+_SIGNED_AS_READ = MappingProxyType({"f": "Negative f word used", "s": "Negative spindle speed used"})
 # Words that run the modal motion on a line with no motion code: axes, and arc centers (rs274 cuts
 # a full circle for a line of ``I0.5`` alone in G2).
 _MOVES = _AXES | frozenset("ijk")
@@ -70,11 +73,20 @@ def add_word(words: Words, letter: str, v: float, table: CodeTable) -> None:
         w = words.w
         if letter in w:
             raise NgcSyntaxError(f"Multiple {letter} words on one line")
+        if v < 0.0 and letter in _SIGNED_AS_READ:
+            raise NgcSemanticError(_SIGNED_AS_READ[letter])
         if letter in INTEGER_LETTERS:
             v = float(integer_value(v))
             if letter == "l" and v < 0.0:
                 raise NgcSemanticError("Negative l word used")
         w[letter] = v
+
+
+def check_signs(w: dict[str, float]) -> None:
+    """The read-time sign rules of :func:`add_word`, for words read without it (in line order)."""
+    for letter, v in w.items():
+        if v < 0.0 and letter in _SIGNED_AS_READ:
+            raise NgcSemanticError(_SIGNED_AS_READ[letter])
 
 
 def _g_word(words: Words, v: float, table: CodeTable) -> None:

@@ -177,6 +177,7 @@ def program_end(it: Machine, code: int) -> None:
         it.emit(ops.EnableFeedOverride())
     st.spindle = 0
     it.emit(ops.StopSpindleTurning(0))
+    st.css, st.css_max = False, 0.0
     it.emit(ops.SetSpindleMode(0, 0.0))
     if st.mist:
         st.mist = False
