@@ -11,7 +11,7 @@ from ..errors import NgcSemanticError, NgcSyntaxError
 from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
-from .handlers import spindle
+from .handlers import spindle, threading
 from .state import State
 
 _G10_L = (0.0, 1.0, 2.0, 10.0, 11.0, 20.0)
@@ -34,6 +34,8 @@ def check(st: State, r: Words, table: CodeTable) -> None:
         _check_g53(st, r, motion)
     if r.others:
         active = implied_motion(st, r, table) if motion is None else motion
+        if motion is None and not r.has_axes and active in threading.SYNCHRONIZED:
+            active = None  # K alone does not run a modal G33 / G33.1 (unlike I J K in G2 / G3)
         _check_other_words(r, active, table)
         if "p" in r.w and active in _ARCS:
             _check_turns(r.w["p"])
@@ -45,6 +47,8 @@ def check(st: State, r: Words, table: CodeTable) -> None:
             raise NgcSemanticError(row.missing)
     if non_modal == 100:
         _check_g10(r)
+    if (motion if motion is not None else implied_motion(st, r, table)) in threading.SYNCHRONIZED:
+        threading.check(r.w)
 
 
 def implied_motion(st: State, r: Words, table: CodeTable) -> int | None:

@@ -160,8 +160,10 @@ _G: dict[int, Code] = {
     50: Code(G_MOTION, STEP_MOTION, None, "ijpq", comp_refusal=_SPLINE_COMP),  # G5 cubic spline
     51: _no_motion("ij", _SPLINE_COMP),  # G5.1 quadratic spline
     52: _motion(None, "pl"),  # G5.2 NURBS
-    330: _motion(None, "k$"),  # G33 spindle synchronized
-    331: _no_motion("ik$", _NOT_G0_G1),  # G33.1 rigid tap
+    330: Code(G_MOTION, STEP_MOTION, "sync_feed", "k$", requires=_AXES,  # G33
+              missing="All axes missing with motion code"),
+    331: Code(G_MOTION, STEP_MOTION, "rigid_tap", "ik$", requires=_AXES,  # G33.1 rigid tap
+              missing="All axes missing with motion code"),
     382: _no_motion("", _PROBE_COMP),
     383: _no_motion("", _PROBE_COMP),
     384: _no_motion("", _PROBE_COMP),
