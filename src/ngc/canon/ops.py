@@ -206,6 +206,12 @@ class SetSpindleMode(NamedTuple):
     css_max: float
 
 
+class OrientSpindle(NamedTuple):
+    spindle: int
+    orientation: float  # degrees
+    direction: int  # rs274's direction code: 1 stopped, 2 clockwise, 3 counterclockwise
+
+
 class MistOn(NamedTuple):
     """No arguments."""
 
@@ -335,6 +341,7 @@ TEMPLATES: Mapping[type, str] = MappingProxyType(
         StartSpindleCounterclockwise: "START_SPINDLE_COUNTERCLOCKWISE(%d)",
         StopSpindleTurning: "STOP_SPINDLE_TURNING(%d)",
         SetSpindleMode: "SET_SPINDLE_MODE(%d %.4f)",
+        OrientSpindle: "ORIENT_SPINDLE(%d, %.4f, %d)",
         MistOn: "MIST_ON()",
         MistOff: "MIST_OFF()",
         FloodOn: "FLOOD_ON()",
