@@ -76,8 +76,8 @@ def _error(text: str) -> str:
     ("g76 p1 z-1 i1 j1 k1", "Bug code not g0 or g1"),
     ("g83 x1 z-1 r1 q1", "Cannot use canned cycles with cutter compensation on"),
     ("g38.2", "All axes missing with motion code"),
-    # compensation turned off on the line: the code is not refused, only not supported yet
-    ("g40 g87 x30 z-1 r1 i1 j1 k1", "G87 is not supported yet"),
+    # compensation turned off on the line: the code is not refused
+    ("g40 g87 x30 z-1 r1 i1 j1 k1", "Spindle not turning in g87"),
     ("g33 z-1 k1", "Bug code not g0 or g1"),  # G33 in the plane runs as a compensated G1
 ])
 def test_codes_refused_while_compensation_is_on(line: str, message: str) -> None:

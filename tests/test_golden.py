@@ -24,9 +24,9 @@ KNOWN: dict[str, str] = {
     "fuzz-rotation-switch-zero-sign": "the sign of a zero: after G10 L2 with a rotation and a "
     "switch to that system, a G0 without axis words prints X -0.0000 Y 0.0000 in rs274, the "
     "other way round in ngc; the order of its rotation arithmetic there is not known yet",
-    "fuzz-sin-long-double-last-place": "SIN[-9.3] is one unit in the last place away from "
-    "rs274's long double result, which FIX of a MOD then shows; away from the functions' zeros "
-    "ngc computes in double",
+    "expr-known-tan-271-last-place": "TAN[271]: the C library's tanl is 1.08 long double units "
+    "off there, and the double rounding shows it; ngc's exact long double tangent rounds the "
+    "other way (one case in about 5000)",
 }
 
 # Cases recorded ahead of the code they need, by name prefix: expected to fail until it is in;

@@ -8,7 +8,7 @@ same text.  Kinds:
              that expose positions and offsets
 ``oword``    parameters, expressions and o-word control flow that compute toolpaths
 ``failing``  a program of another kind with one mutation meant to make it fail midway
-``cycles``   the motion programs with series of holes drilled by G81, G82, G85 and G89
+``cycles``   the motion programs with series of holes drilled by every canned cycle
 
 How it is built: a program is a preamble, a body and an ending.  The body is a sequence of
 *statements*; each kind has a table of ``(weight, function)`` entries (``MOTION``, ``OFFSETS``,
@@ -1252,7 +1252,7 @@ def _program(kind: str, seed: int, table: list[tuple[float, Callable[[Gen], None
 
 # ---- statements: canned cycles ------------------------------------------------------------------
 
-CYCLE_CODES = ["73", "81", "82", "83", "84", "85", "86", "88", "89"]  # the drilling cycles ngc runs
+CYCLE_CODES = ["73", "74", "81", "82", "83", "84", "85", "86", "87", "88", "89"]  # all of them
 
 
 def st_drill(g: Gen) -> None:
@@ -1284,7 +1284,7 @@ def st_drill(g: Gen) -> None:
     else:
         words += [g.word(normal.upper(), g.num(bottom - r_plane)),
                   g.word("R", g.num(r_plane - level))]
-    p_odds = {"82": 0.97, "84": 0.5, "86": 0.97, "88": 0.97, "89": 0.97}  # G84's P is optional
+    p_odds = {"74": 0.5, "82": 0.97, "84": 0.5, "86": 0.97, "88": 0.97, "89": 0.97}  # G74, G84: optional
     if g.rng.random() < p_odds.get(code, 0.0):
         words.append(g.word("P", g.num(g.rng.choice([0, 0.5, 1, g.rng.uniform(0, 3)]), 2)))
     if code in ("73", "83") and g.rng.random() < 0.97:  # the peck depth: a few to a hole, or more
@@ -1293,14 +1293,22 @@ def st_drill(g: Gen) -> None:
     if code == "84" and g.rng.random() < 0.9:  # G84 taps with the spindle turning clockwise
         words.append("M3")
         g.spindle_on = True
-    if code in ("86", "88") and g.rng.random() < 0.9:  # G86, G88: the spindle turning either way
+    if code == "74" and g.rng.random() < 0.9:  # G74 taps with the spindle turning counterclockwise
+        words.append("M4")
+        g.spindle_on = True
+    if code in ("86", "87", "88") and g.rng.random() < 0.9:  # the spindle turning either way
         words.append(g.rng.choice(["M3", "M4"]))
         g.spindle_on = True
-    if g.rng.random() < 0.25:
+    if code == "87":
+        words += _back_bore_words(g, normal, bottom, r_plane)
+    if g.rng.random() < (0.01 if code == "74" else 0.25):  # rs274 refuses L with G74
         words.append(g.word("L", str(g.rng.randint(1, 4))))
     words.append(g.feed_word())
     g.emit(g.words(*words))
     for _ in range(g.rng.randint(0, 3)):  # more holes: the cycle is the motion mode
+        if g.rng.random() < 0.15:
+            first, second, normal = _cycle_plane_change(g, code)
+            continue
         step = [g.word(a.upper(), g.num(g.coord(-30, 30) if not g.absolute
                                          else g.pos[a] + g.coord(-30, 30)))
                 for a in (first, second) if g.rng.random() < 0.8]
@@ -1313,6 +1321,45 @@ def st_drill(g: Gen) -> None:
     g.absolute = True
     g.motion = "0"
     g.pos = end
+
+
+def _back_bore_words(g: Gen, normal: str, bottom: float, r_plane: float) -> list[str]:
+    """G87's I J K: the offset point in the plane, the back-bore height on the drill axis
+    (absolute in G90, from the bottom in G91); each left out now and then."""
+    words = []
+    for a, letter in zip("xyz", "IJK", strict=True):
+        if g.rng.random() < 0.02:
+            continue
+        if a == normal:
+            height = g.rng.uniform(bottom, r_plane)
+            words.append(g.word(letter, g.num(height if g.absolute else height - bottom)))
+        else:
+            words.append(g.word(letter, g.num(g.coord(-2, 2))))
+    return words
+
+
+def _cycle_plane_change(g: Gen, code: str) -> tuple[str, str, str]:
+    """In the middle of a series of cycles: another plane, and a hole there, with its bottom (and
+    now and then a new R and, for G87, new I J K) on the new drill axis."""
+    assert g.pos is not None
+    g.plane = g.rng.choice([p for p in PLANES if p != g.plane])
+    first, second, normal, _, _ = PLANES[g.plane]
+    level = g.pos[normal]
+    r_plane = level + g.coord(-3, 8)
+    bottom = r_plane - g.coord(0.5, 12)
+    words = [g.g(g.plane)]
+    if g.rng.random() < 0.3:
+        words.append(g.g(g.rng.choice(["98", "99"])))
+    words += [g.word(a.upper(), g.num(g.coord(-30, 30) if not g.absolute
+                                      else g.pos[a] + g.coord(-30, 30)))
+              for a in (first, second) if g.rng.random() < 0.8]
+    words.append(g.word(normal.upper(), g.num(bottom if g.absolute else bottom - r_plane)))
+    if g.rng.random() < 0.7:
+        words.append(g.word("R", g.num(r_plane if g.absolute else r_plane - level)))
+    if code == "87" and g.rng.random() < 0.5:
+        words += _back_bore_words(g, normal, bottom, r_plane)
+    g.emit(g.words(*words))
+    return first, second, normal
 
 
 CYCLES: list[tuple[float, Callable[[Gen], None]]] = [*MOTION, (25, st_drill)]
@@ -1501,7 +1548,10 @@ def mu_bad_cycle(g: Gen, lines: list[str]) -> None:
         "G81 X1 Z-1", "G82 X1 Z-1 R1", "G81 X1 Z-1 R1 L0", "G81 X1 Z2 R1", "G93 G81 X1 Z-1 R1 F1",
         "G81 X1 A1 Z-1 R1", "G41.1 D1\nG81 X1 Z-1 R1", "G18 G81 X1 Y-1 R1", "G19 G85 Y1 X2 R1",
         "F0\nG81 X1 Z-1 R1", "G17.1 G81 X1 Z-1 R1", "G81 X1 Z-1 R1 L-2", "G89 X1 Z-1 R1 P",
-        "G82 X2 Z-3 R1 P1\nG81 X3", "G81 X1 Z-1 R1\nG0 X2\nX3"]))
+        "G82 X2 Z-3 R1 P1\nG81 X3", "G81 X1 Z-1 R1\nG0 X2\nX3", "M3\nG74 X1 Z-1 R1",
+        "M5\nG74 X1 Z-1 R1", "M4\nG91 G74 X1 Z-1 R1 L2", "M3\nG87 X1 Z-1 R1 I1 J1",
+        "M3\nG87 X1 Z-1 R1 J1 K1", "M5\nG87 X1 Z-1 R1 I1 J1 K1", "G18 G87 X1 Y-1 R1 I1 K1",
+        "M3\nG87 X1 Z-1 R1 I1 J1 K1\nG81 X2\nG87 X3 Z-1 R1"]))
 
 
 MUTATIONS: list[tuple[float, Callable[[Gen, list[str]], None]]] = [

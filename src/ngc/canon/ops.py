@@ -209,7 +209,7 @@ class SetSpindleMode(NamedTuple):
 class OrientSpindle(NamedTuple):
     spindle: int
     degrees: float
-    direction: int  # M19 P: 0 shortest, 1 clockwise, 2 counterclockwise
+    direction: int  # M19's P (0 shortest, 1 clockwise, 2 counterclockwise); G87 gives 2 or 3
 
 
 class WaitOrientComplete(NamedTuple):

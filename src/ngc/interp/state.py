@@ -32,6 +32,7 @@ class State:
         "css_max",
         "cycle_code",
         "cycle_level",
+        "cycle_offsets",
         "cycle_p",
         "cycle_q",
         "cycle_r",
@@ -97,6 +98,7 @@ class State:
         self.cycle_p = 0.0
         self.cycle_q = 0.0
         self.cycle_level = 0.0
+        self.cycle_offsets = (0.0, 0.0, 0.0)  # G87's sticky I J K
         self.cycle_code = -1  # none
         # Tools.  ``tools`` is the machine's tool data (slot 0: the spindle's entry).
         self.tools = Tools()

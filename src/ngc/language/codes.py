@@ -169,6 +169,7 @@ _G: dict[int, Code] = {
     384: _no_motion("", _PROBE_COMP),
     385: _no_motion("", _PROBE_COMP),
     730: _cycle("chip_break", "rlq"),
+    740: _cycle("tap_left", "rp"),  # no L: rs274 refuses it with G74
     760: _no_motion("ijklpqrhe$", _NOT_G0_G1),
     700: _no(G_MOTION, STEP_MOTION, "qdep"),  # G70 lathe finishing cycle
     710: _no(G_MOTION, STEP_MOTION, "qdir"),  # G71, G71.1, G71.2 lathe roughing cycles
@@ -184,7 +185,7 @@ _G: dict[int, Code] = {
     840: _cycle("tap", "rlp"),
     850: _cycle("bore", "rl"),
     860: _cycle("bore_stop", "rlp"),
-    870: _cycle(None, "rlijk"),
+    870: _cycle("back_bore", "rlijk"),
     880: _cycle("bore_manual", "rlp"),
     890: _cycle("bore_dwell", "rlp"),
     # group 2: plane

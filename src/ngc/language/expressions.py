@@ -12,11 +12,10 @@ from __future__ import annotations
 import math
 import operator
 from collections.abc import Callable
-from fractions import Fraction
 from typing import Protocol
 
+from .. import degrees
 from ..errors import NgcRuntimeError
-from ..longdouble import PI, PI_LONG_DOUBLE, round_long_double
 
 
 class ParamContext(Protocol):
@@ -208,88 +207,37 @@ def _round(x: float) -> float:
     return float(math.floor(a)) * (1.0 if x >= 0 else -1.0) + 0.0
 
 
-# rs274 computes trigonometry in x87 long double: the angle in radians is x * pi / 180 with pi and
-# both products rounded to 64-bit mantissas, then the exact function of that angle.  Away from the
-# function's zeros the double result agrees, or is one unit in the last place away (SIN[-9.3]: a
-# known difference, see tests/test_golden.py); near them (COS[90], SIN[180], TAN[90]) only the long
-# double angle gives rs274's sign and size, so it is rebuilt exactly there.
-_NEAR_ZERO = 1e-9
-
-
-def _quadrant(degrees: float) -> tuple[int, float]:
-    """The long double angle of ``degrees`` as (k mod 4, d): angle = k * pi/2 + d."""
-    angle = round_long_double(round_long_double(Fraction(degrees) * PI_LONG_DOUBLE) / 180)
-    k = round(angle / (PI / 2))
-    return k % 4, float(angle - k * PI / 2)
-
-
-# sin of the multiples of 30 degrees whose value is not 0: the long double result rounds to these
-# doubles exactly (COS[120] is -0.5, as rs274 gives it; the double computation is 1 ulp off).
-_SIN_30 = (0.0, 0.5, math.sqrt(3.0) / 2, 1.0, math.sqrt(3.0) / 2, 0.5,
-           0.0, -0.5, -math.sqrt(3.0) / 2, -1.0, -math.sqrt(3.0) / 2, -0.5)
-
-
-def _sin_30(x: float) -> float | None:
-    """sin of ``x`` degrees when ``x`` is a multiple of 30 (not of 180), else None."""
-    if x % 30.0 != 0.0 or abs(x) > 1e15:
-        return None
-    r = _SIN_30[int(x // 30.0) % 12]
-    return r or None
-
-
-def sin_degrees(x: float) -> float:
+# rs274 computes SIN, COS and TAN in x87 long double (see ngc/degrees.py); a zero angle keeps its
+# sign (SIN[-0] and TAN[-0] are -0), a NaN or infinite one gives NaN.
+def _sin(x: float) -> float:
     if x - x != 0.0:
         return math.nan
-    if x == 0.0:
-        return x  # SIN[-0] is -0
-    exact = _sin_30(x)
-    if exact is not None:
-        return exact
-    r = math.sin(math.radians(x))
-    if abs(r) > _NEAR_ZERO:
-        return r
-    k, d = _quadrant(x)
-    return (math.sin(d), math.cos(d), -math.sin(d), -math.cos(d))[k]
+    return x if x == 0.0 else degrees.sin_degrees(x)
 
 
-def cos_degrees(x: float) -> float:
+def _cos(x: float) -> float:
     if x - x != 0.0:
         return math.nan
-    exact = _sin_30(x + 90.0)
-    if exact is not None:
-        return exact
-    r = math.cos(math.radians(x))
-    if abs(r) > _NEAR_ZERO:
-        return r
-    k, d = _quadrant(x)
-    return (math.cos(d), -math.sin(d), -math.cos(d), math.sin(d))[k]
+    return degrees.cos_degrees(x)
 
 
 def _tan(x: float) -> float:
     if x - x != 0.0:
         return math.nan
-    if x == 0.0:
-        return x  # TAN[-0] is -0
-    if x % 45.0 == 0.0 and x % 90.0 != 0.0 and abs(x) < 1e15:
-        return 1.0 if int(x // 45.0) % 4 == 1 else -1.0  # TAN[45] is 1, as rs274 gives it
-    r = math.tan(math.radians(x))
-    if _NEAR_ZERO < abs(r) < 1 / _NEAR_ZERO:
-        return r
-    k, d = _quadrant(x)
-    return math.tan(d) if k % 2 == 0 else -1.0 / math.tan(d)
+    return x if x == 0.0 else degrees.tan_degrees(x)
 
 
 UNARY: dict[str, Callable[[float], float]] = {
     "abs": lambda x: -x if x < 0 else x,  # as rs274: ABS[-0] is -0
     "acos": _acos,
     "asin": _asin,
-    "cos": cos_degrees,
+    "cos": _cos,
     "exp": _exp,
     "fix": _fix,
     "fup": _fup,
     "round": _round,
     "ln": _ln,
-    "sin": sin_degrees,
+    "sin": _sin,
     "sqrt": _sqrt,
     "tan": _tan,
 }

@@ -1,7 +1,8 @@
-"""Canned cycles: G73 drilling with chip breaking, G81 drilling, G82 drilling with dwell, G83 peck
-drilling, G84 right-hand tapping, G85 boring with feed out, G86 boring with spindle stop and rapid
-out, G88 boring with spindle stop and manual out, G89 boring with dwell and feed out (g-code.adoc,
-"G80-G89 Canned Cycles"), in the XY, XZ and YZ planes.
+"""Canned cycles: G73 drilling with chip breaking, G74 left-hand tapping, G81 drilling, G82
+drilling with dwell, G83 peck drilling, G84 right-hand tapping, G85 boring with feed out, G86
+boring with spindle stop and rapid out, G87 back boring, G88 boring with spindle stop and manual
+out, G89 boring with dwell and feed out (g-code.adoc, "G80-G89 Canned Cycles"), in the XY, XZ and
+YZ planes.
 
 What rs274 does, as it shows it:
 
@@ -9,13 +10,13 @@ What rs274 does, as it shows it:
   (R is sticky: taken from the last cycle if the same cycle is the motion mode), L0, then by
   plane: an X, Y or Z word in a UVW plane; no word for the drill axis (sticky as R); the R plane
   below the bottom.
-* The drill axis' *initial level* is its position when a series of cycles began; the series
-  lasts while the motion mode stays a canned cycle (another motion code, G80 included, ends it).
-  In G91, R is relative to that level and the bottom relative to R.  If the level is below R, the
-  drill axis first goes (up or down) to R at the current point (once, whatever L), and the level
-  then is R.  In G99 a cycle that follows a cycle starts lower: from where the drill is, if that is
-  below the initial level, but not below R (not a physical height: rs274's bookkeeping).
-* Retract height ("clear"): R in G99; in G98, the level (R if that was higher).
+* The *initial level* is the drill axis' position when a series of cycles began; the series
+  lasts while the motion mode stays a canned cycle (another motion code, G80 included, ends it),
+  through changes of plane (the level is then a number taken on another axis).  In G91, R is
+  relative to that level and the bottom relative to R.  If the level is below R, the drill axis
+  first goes (up or down) to R at the current point, once, whatever L.  Then the drill goes across
+  at the height it is at, if that is above R; else at the retract height.
+* Retract height ("clear"): R in G99; in G98, the level (R if that is higher).
 * Unless the path mode is G61, the cycle runs in exact-path mode and the mode in force is given
   back after it (with the naive-CAM tolerance).
 * Each of the L repeats: a traverse in the plane at the level, a traverse to R if the level is not
@@ -39,6 +40,13 @@ What rs274 does, as it shows it:
   off, the feed in goes to the bottom, the spindle stops and turns counterclockwise, the dwell, the
   feed out goes to clear, the spindle stops and turns clockwise, and each override that was on is
   turned back on.  rs274 writes the two feeds' X, Y, Z turned round in the XZ and YZ planes.
+  G74 is G84 with the spindle turning the other way ("Spindle turning clockwise in G74"); it
+  takes no L word.
+* G87, the I J K words (each sticky as P; "I word missing with g87", checked where P is) are, on
+  the plane's two axes, the offset of the point where the tool goes down through the hole with
+  the spindle stopped and oriented, and on the drill axis the height it bores back up to
+  (absolute in G90, from the bottom in G91).  At each hole the spindle must turn ("Spindle not
+  turning in g87").
 """
 
 from __future__ import annotations
@@ -116,20 +124,38 @@ def _pecks(it: Machine, at: list[float], axis: int, bottom: float, rr: float, cl
 def _tap(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
          dwell: float) -> None:
     """G84: feed to the bottom, reverse the spindle, dwell, feed out to clear, overrides off."""
+    _tapping(it, at, axis, bottom, clear, dwell, 1)
+
+
+def _tap_left(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+              dwell: float) -> None:
+    """G74: G84 with the spindle turning the other way (in counterclockwise, out clockwise)."""
+    _tapping(it, at, axis, bottom, clear, dwell, -1)
+
+
+_TURNS: dict[int, ops.StartSpindleClockwise | ops.StartSpindleCounterclockwise] = {
+    1: ops.StartSpindleClockwise(0), -1: ops.StartSpindleCounterclockwise(0)}
+_TURN_NAMES = {1: "clockwise", -1: "counterclockwise"}
+
+
+def _tapping(it: Machine, at: list[float], axis: int, bottom: float, clear: float, dwell: float,
+             way: int) -> None:
+    """G84 (``way`` 1: the spindle turns clockwise going in) and G74 (``way`` -1)."""
     st = it.state
+    name = "G84" if way > 0 else "G74"
     if st.spindle == 0:
-        raise NgcSemanticError("Spindle not turning in G84")
-    if st.spindle < 0:
-        raise NgcSemanticError("Spindle turning counterclockwise in G84")
+        raise NgcSemanticError(f"Spindle not turning in {name}")
+    if st.spindle * way < 0:
+        raise NgcSemanticError(f"Spindle turning {_TURN_NAMES[-way]} in {name}")
     it.emit(ops.DisableFeedOverride())
     it.emit(ops.DisableSpeedOverride(0))
     _tap_feed(it, _at(at, axis, bottom), axis)
     it.emit(ops.StopSpindleTurning(0))
-    it.emit(ops.StartSpindleCounterclockwise(0))
+    it.emit(_TURNS[-way])
     it.emit(ops.Dwell(dwell))
     _tap_feed(it, _at(at, axis, clear), axis)
     it.emit(ops.StopSpindleTurning(0))
-    it.emit(ops.StartSpindleClockwise(0))
+    it.emit(_TURNS[way])
     if st.feed_override:  # the overrides come back as they were
         it.emit(ops.EnableFeedOverride())
     if st.speed_override:
@@ -168,6 +194,33 @@ def _turning(it: Machine, name: str) -> ops.StartSpindleClockwise | ops.StartSpi
     return ops.StartSpindleCounterclockwise(0)
 
 
+def _back_bore(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
+               dwell: float) -> None:
+    """G87: from R, out to the offset point (the plane's I J K words), stop and orient the
+    spindle, down to the bottom there, back to the hole's axis, restart the spindle, feed up to
+    the back-bore height and back down, stop and orient again, out to the offset point, up to
+    clear, back to the hole's axis, restart the spindle."""
+    st = it.state
+    restart = _turning(it, "g87")
+    orient = ops.OrientSpindle(0, 0.0, 2 if st.spindle > 0 else 3)
+    side = [a + st.cycle_offsets[i] if i != axis and i < 3 else a for i, a in enumerate(at)]
+    motion.traverse(it, _at(side, axis, rr))
+    it.emit(ops.StopSpindleTurning(0))
+    it.emit(orient)
+    motion.traverse(it, _at(side, axis, bottom))
+    motion.traverse(it, _at(at, axis, bottom))
+    it.emit(restart)
+    height = st.cycle_offsets[axis] + (0.0 if st.absolute else bottom)
+    _feed(it, _at(at, axis, height))
+    _feed(it, _at(at, axis, bottom))
+    it.emit(ops.StopSpindleTurning(0))
+    it.emit(orient)
+    motion.traverse(it, _at(side, axis, bottom))
+    motion.traverse(it, _at(side, axis, clear))
+    motion.traverse(it, _at(at, axis, clear))
+    it.emit(restart)
+
+
 def _bore(it: Machine, at: list[float], axis: int, bottom: float, rr: float, clear: float,
           dwell: float) -> None:
     """G85: feed to the bottom, feed back to R, traverse to clear."""
@@ -195,7 +248,7 @@ _P_NONE, _P_REQUIRED, _P_OPTIONAL = 0, 1, 2
 
 
 def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int,
-           pecks: bool) -> None:
+           pecks: bool, offsets: bool) -> None:
     st = it.state
     w = r.w
     if st.feed == 0.0:
@@ -229,7 +282,7 @@ def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int,
         raise NgcSemanticError(f"{letter.upper()} value unspecified in {plane} plane canned cycle")
     pos = st.pos if it.comp is None else it.comp.prog
     series = st.motion == st.cycle_code  # a cycle follows a cycle
-    level = st.cycle_level if series else pos[axis]
+    initial = st.cycle_level if series else pos[axis]
     at = list(pos)
     steps = [0.0] * len(pos)
     if st.absolute:
@@ -238,7 +291,7 @@ def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int,
             if i != axis and a in w:
                 at[i] = w[a]
     else:
-        rr = r_word + level
+        rr = r_word + initial
         bottom = rr + depth
         for i, a in enumerate("xyz"):
             if i != axis:
@@ -246,13 +299,14 @@ def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int,
     if rr < bottom:
         raise NgcSemanticError(f"R less than {letter} in cycle in {plane} plane")
     st.cycle_code = code
-    st.cycle_level = level
-    if series and st.retract_r:  # G99: from where the drill is, if lower, but not below R
-        level = min(level, max(pos[axis], rr))
-    if level < rr:
+    st.cycle_level = initial
+    level = pos[axis]  # where the drill is (on a new plane's axis, too)
+    if initial < rr:
         motion.traverse(it, _at(pos, axis, rr))
         level = rr
-    clear = rr if st.retract_r else level
+    clear = rr if st.retract_r else max(initial, rr)
+    if level <= rr:
+        level = clear
     framed = st.control_mode != 610
     if framed:
         it.emit(ops.SetMotionControlMode("CANON_EXACT_PATH"))
@@ -264,6 +318,8 @@ def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int,
                 raise NgcSemanticError(f"Dwell time p word missing with g{code // 10}")
             dwell = st.cycle_p
         st.cycle_p = dwell
+    if offsets:  # G87's I J K, each sticky as P
+        st.cycle_offsets = _offsets(st.cycle_offsets, w, same, code)
     if pecks:  # the peck depth, Q, sticky as P; the body gets it instead of a dwell
         dwell = w.get("q", _NO_DWELL)
         if dwell == _NO_DWELL:
@@ -287,6 +343,18 @@ def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int,
     st.cycle_r = r_word
     st.cycle_z = depth
     st.motion = code
+
+
+def _offsets(last: tuple[float, float, float], w: dict[str, float], same: bool,
+             code: int) -> tuple[float, float, float]:
+    """The I J K words of G87 (each the last one's if left out in a series of G87)."""
+    values = list(last)
+    for i, letter in enumerate("ijk"):
+        if letter in w:
+            values[i] = w[letter]
+        elif not same:
+            raise NgcSemanticError(f"{letter.upper()} word missing with g{code // 10}")
+    return values[0], values[1], values[2]
 
 
 def _restore_mode(it: Machine) -> None:
@@ -325,25 +393,27 @@ def _tap_feed(it: Machine, end: list[float], axis: int) -> None:
 
 
 # The handler of each cycle in the code table: what it does at the hole, how it takes P, whether
-# it takes Q.
-CYCLES: dict[str, tuple[Body, int, bool]] = {
-    "chip_break": (_chip_break, _P_NONE, True),  # G73
-    "drill": (_drill, _P_NONE, False),  # G81
-    "drill_dwell": (_drill_dwell, _P_REQUIRED, False),  # G82
-    "peck": (_peck, _P_NONE, True),  # G83
-    "tap": (_tap, _P_OPTIONAL, False),  # G84
-    "bore": (_bore, _P_NONE, False),  # G85
-    "bore_stop": (_bore_stop, _P_REQUIRED, False),  # G86
-    "bore_manual": (_bore_manual, _P_REQUIRED, False),  # G88
-    "bore_dwell": (_bore_dwell, _P_REQUIRED, False),  # G89
+# it takes Q, whether it takes I J K.
+CYCLES: dict[str, tuple[Body, int, bool, bool]] = {
+    "chip_break": (_chip_break, _P_NONE, True, False),  # G73
+    "tap_left": (_tap_left, _P_OPTIONAL, False, False),  # G74
+    "drill": (_drill, _P_NONE, False, False),  # G81
+    "drill_dwell": (_drill_dwell, _P_REQUIRED, False, False),  # G82
+    "peck": (_peck, _P_NONE, True, False),  # G83
+    "tap": (_tap, _P_OPTIONAL, False, False),  # G84
+    "bore": (_bore, _P_NONE, False, False),  # G85
+    "bore_stop": (_bore_stop, _P_REQUIRED, False, False),  # G86
+    "back_bore": (_back_bore, _P_NONE, False, True),  # G87
+    "bore_manual": (_bore_manual, _P_REQUIRED, False, False),  # G88
+    "bore_dwell": (_bore_dwell, _P_REQUIRED, False, False),  # G89
 }
 
 
 def handler(name: str) -> Callable[[Machine, Resolved, int], None]:
     """The step of the cycle ``name`` names in the code table (see :data:`CYCLES`)."""
-    body, dwells, pecks = CYCLES[name]
+    body, dwells, pecks, offsets = CYCLES[name]
 
     def run(it: Machine, r: Resolved, code: int) -> None:
-        _cycle(it, r, code, body, dwells, pecks)
+        _cycle(it, r, code, body, dwells, pecks, offsets)
 
     return run

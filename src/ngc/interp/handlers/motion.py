@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 
 from ...canon import ops
 from ...errors import NgcSemanticError
+from ...glibc_hypot import hypot
 from .. import comp, frames
 
 if TYPE_CHECKING:
@@ -49,32 +50,40 @@ def end_point(it: Machine, w: dict[str, float], machine: bool) -> list[float]:
 
 
 def polar_end(pos: list[float], w: dict[str, float], absolute: bool) -> list[float]:
-    """@ distance and ^ angle (degrees) from the XY origin; in G91 both add to the current ones."""
+    """@ distance and ^ angle (degrees) from the XY origin; in G91 both add to the current ones.
+
+    As rs274 computes it, to the last bit (its signed zeros show it): the distance of a point is
+    the C library's ``hypot`` (:mod:`ngc.glibc_hypot`), its angle ``atan2`` in radians, the ^
+    angle is taken to radians alone.  In G91 an @ moves the point out along its angle first, and
+    the ^ then turns that point (its distance and angle taken again)."""
     for letter in "xy":
         if letter in w:
             raise NgcSemanticError(f"Cannot specify both polar coordinate and {letter.upper()} word")
-    at_origin = pos[0] == 0.0 and pos[1] == 0.0
-    radius = math.hypot(pos[0], pos[1])
-    angle = math.atan2(pos[1], pos[0]) * 180.0 / math.pi
+    x, y = pos[0], pos[1]
+    at_origin = x == 0.0 and y == 0.0
     if absolute:
         if "^" not in w and at_origin:
             raise NgcSemanticError("Must specify angle in polar coordinate if at the origin")
-        radius = w.get("@", radius)
-        angle = w.get("^", angle)
+        radius = w["@"] if "@" in w else hypot(x, y)
+        x, y = _polar(radius, math.radians(w["^"]) if "^" in w else math.atan2(y, x))
     else:
         if at_origin:
             raise NgcSemanticError(
                 "Incremental motion with polar coordinates is indeterminate when at the origin"
             )
-        radius += w.get("@", 0.0)
-        angle += w.get("^", 0.0)
+        if "@" in w:
+            x, y = _polar(hypot(x, y) + w["@"], math.atan2(y, x))
+        if "^" in w:
+            x, y = _polar(hypot(x, y), math.atan2(y, x) + math.radians(w["^"]))
     end = relative_end(pos, w) if not absolute else [
         pos[0], pos[1], w.get("z", pos[2]), w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])
     ]
-    t = math.radians(angle)
-    end[0] = radius * math.cos(t)
-    end[1] = radius * math.sin(t)
+    end[0], end[1] = x, y
     return end
+
+
+def _polar(radius: float, angle: float) -> tuple[float, float]:
+    return radius * math.cos(angle), radius * math.sin(angle)
 
 
 def relative_end(pos: list[float], w: dict[str, float]) -> list[float]:
