@@ -91,6 +91,7 @@ BATCH_SEEDS: dict[str, list[int]] = {
     "offsets": list(range(1, 21)),
     "oword": list(range(1, 21)),
     "failing": [s for s in range(1, 22) if s != 8],
+    "splines": list(range(1, 21)),
 }
 
 

@@ -9,6 +9,7 @@ same text.  Kinds:
 ``oword``    parameters, expressions and o-word control flow that compute toolpaths
 ``failing``  a program of another kind with one mutation meant to make it fail midway
 ``cycles``   the motion programs with series of holes drilled by every canned cycle
+``splines``  the motion programs with G5 and G5.1 curves and G5.2 ... G5.3 NURBS blocks
 
 How it is built: a program is a preamble, a body and an ending.  The body is a sequence of
 *statements*; each kind has a table of ``(weight, function)`` entries (``MOTION``, ``OFFSETS``,
@@ -31,6 +32,7 @@ from collections.abc import Callable
 
 import contour
 import spindlesync
+import splines
 
 AXES = "xyz"
 # plane code -> (first axis, second axis, normal axis, first offset letter, second offset letter)
@@ -1369,6 +1371,13 @@ def gen_cycles(seed: int) -> str:
     return text_of(_program("cycles", seed, CYCLES, 3, 25).lines)
 
 
+SPLINES: list[tuple[float, Callable[[Gen], None]]] = [*MOTION, *splines.STATEMENTS]
+
+
+def gen_splines(seed: int) -> str:
+    return text_of(_program("splines", seed, SPLINES, 5, 30).lines)
+
+
 def gen_motion(seed: int) -> str:
     return text_of(_program("motion", seed, MOTION, 5, 40).lines)
 
@@ -1556,6 +1565,7 @@ def mu_bad_cycle(g: Gen, lines: list[str]) -> None:
 
 MUTATIONS: list[tuple[float, Callable[[Gen, list[str]], None]]] = [
     (2, mu_bad_cycle),
+    (2, splines.mu_bad_spline),
     (2, mu_non_finite),
     (2, mu_read_order),
     (3, mu_unknown_code),
@@ -1579,7 +1589,7 @@ MUTATIONS: list[tuple[float, Callable[[Gen, list[str]], None]]] = [
 
 def gen_failing(seed: int) -> str:
     g = Gen(seed, "failing")
-    base_kind = g.rng.choice(["motion", "motion", "offsets", "mixed", "oword"])
+    base_kind = g.rng.choice(["motion", "motion", "offsets", "mixed", "oword", "splines"])
     lines = KINDS[base_kind](g.rng.randrange(1 << 30)).split("\n")
     if lines and lines[-1] == "":
         lines.pop()
@@ -1604,6 +1614,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "comp": gen_comp,
     "cycles": gen_cycles,
     "threading": spindlesync.gen_threading,
+    "splines": gen_splines,
 }
 
 

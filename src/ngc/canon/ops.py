@@ -69,6 +69,19 @@ class ArcFeed(NamedTuple):
     c: float
 
 
+class NurbsFeed(NamedTuple):
+    """A feed along a NURBS curve in the XY plane (G5, G5.1, a G5.2 ... G5.3 block), from the
+    current point.  rs274 prints only the number of control points; the op carries the whole
+    curve, for the consumers of canon: the control points in program coordinates (the first is the
+    start, the last the end), their weights, the order and the knot vector."""
+
+    size: int  # the number of control points
+    order: int
+    points: tuple[tuple[float, float], ...]
+    weights: tuple[float, ...]
+    knots: tuple[float, ...]
+
+
 class Dwell(NamedTuple):
     seconds: float
 
@@ -340,6 +353,7 @@ TEMPLATES: Mapping[type, str] = MappingProxyType(
         StraightTraverse: "STRAIGHT_TRAVERSE(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
         StraightFeed: "STRAIGHT_FEED(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
         ArcFeed: "ARC_FEED(%.4f, %.4f, %.4f, %.4f, %d, %.4f, %.4f, %.4f, %.4f)",
+        NurbsFeed: "NURBS_FEED(%d, ...)",
         Dwell: "DWELL(%.4f)",
         UseLengthUnits: "USE_LENGTH_UNITS(%s)",
         SelectPlane: "SELECT_PLANE(%s)",
@@ -396,6 +410,10 @@ TEMPLATES: Mapping[type, str] = MappingProxyType(
         OnReset: "ON_RESET()",
     }
 )
+
+
+# The ops whose text shows only their first fields: how many.
+SHOWN: Mapping[type, int] = MappingProxyType({NurbsFeed: 1})
 
 
 def op_name(op: Op) -> str:

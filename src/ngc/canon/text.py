@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any, TextIO
 
-from .ops import TEMPLATES, ArcFeed, Op, StraightFeed, StraightTraverse
+from .ops import SHOWN, TEMPLATES, ArcFeed, Op, StraightFeed, StraightTraverse
 
 # The ops whose last four fields are the tail kept (see the module docstring): the moves, whose
 # tail starts at field 2 (a straight move) or 5 (an arc).
@@ -24,6 +24,8 @@ _Format = tuple[str, str, int, list[Any]]
 
 def _format(kind: type) -> _Format:
     template = "%5d %s" + TEMPLATES[kind] + "\n"
+    if kind in SHOWN:  # (a negative start: the number of fields shown)
+        return template, "", -SHOWN[kind], []
     if kind not in _TAILED:
         return template, "", 0, []
     head = template[:template.rindex(", " + _TAIL)] + ", %s)\n"
@@ -58,8 +60,11 @@ class TextSink:
         except KeyError:
             template, _, i, _ = self._formats[type(op)] = _format(type(op))
         if i:
-            self.emit_move(type(op), op, label, line)  # type: ignore[arg-type]
-            return
+            if i < 0:
+                op = op[:-i]  # type: ignore[index]
+            else:
+                self.emit_move(type(op), op, label, line)  # type: ignore[arg-type]
+                return
         count = self._count = self._count + 1
         # (a tuple concatenation is cheaper than unpacking into a new tuple)
         self._lines.append(template % ((count, label) + op))  # type: ignore[operator]  # noqa: RUF005

@@ -16,12 +16,16 @@ from .state import State
 
 _G10_L = (0.0, 1.0, 2.0, 10.0, 11.0, 20.0)
 _ARCS = (20, 30)
+# The motion modes that run nothing: G80, and none after G5.3.
+_NO_MOTION = (codes.G_CANCEL_MOTION, codes.G_NURBS_END)
 
 
 def check(st: State, r: Words, table: CodeTable) -> None:
     """Raise the first rule ``r`` breaks, in rs274's order."""
-    g = r.g
     _check_supported(st, r, table)
+    if r.g.get(codes.G_MOTION) == codes.G_NURBS_END:
+        r = _without_nurbs_end(r)
+    g = r.g
     non_modal = g.get(codes.G_NON_MODAL)
     motion = g.get(codes.G_MOTION)
     if r.has_axes:
@@ -49,6 +53,16 @@ def check(st: State, r: Words, table: CodeTable) -> None:
         _check_g10(r)
     if (motion if motion is not None else implied_motion(st, r, table)) in threading.SYNCHRONIZED:
         threading.check(r.w)
+
+
+def _without_nurbs_end(r: Words) -> Words:
+    """A G5.3 line as rs274 checks it: as if the G5.3 were not on it, its words against the
+    modal motion (``G5.3 X1`` after G0 passes, and fails at G5.3's own check; at the start, in
+    G80, it is "Cannot use axis values without a g code that uses them")."""
+    rest = Words()
+    rest.g = {group: code for group, code in r.g.items() if group != codes.G_MOTION}
+    rest.m, rest.w, rest.assigns, rest.comment = r.m, r.w, r.assigns, r.comment
+    return rest.finish()
 
 
 def implied_motion(st: State, r: Words, table: CodeTable) -> int | None:
@@ -105,7 +119,7 @@ def _check_axis_users(
         return
     if motion == codes.G_CANCEL_MOTION:
         raise NgcSemanticError("Cannot use axis values with g80")
-    if motion is None and st.motion == codes.G_CANCEL_MOTION:
+    if motion is None and st.motion in _NO_MOTION:
         raise NgcSemanticError("Cannot use axis values without a g code that uses them")
 
 

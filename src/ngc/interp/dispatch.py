@@ -18,7 +18,8 @@ from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
 from .check import implied_motion
-from .handlers import ccomp, coordinates, cycles, modes, motion, program, spindle, threading, tools
+from .handlers import (ccomp, coordinates, cycles, modes, motion, program, spindle, splines,
+                       threading, tools)
 from .machine import Machine
 
 Handler = Callable[[Machine, Words, int], None]
@@ -128,6 +129,10 @@ _HANDLERS: dict[str, Handler] = {
     "cancel_motion": _cancel_motion,
     "sync_feed": lambda m, r, code: threading.sync_feed(m, r.w, motion.end_point(m, r.w, False)),
     "rigid_tap": lambda m, r, code: threading.rigid_tap(m, r.w, motion.end_point(m, r.w, False)),
+    "cubic_spline": splines.cubic,
+    "quadratic_spline": splines.quadratic,
+    "nurbs": splines.nurbs,
+    "nurbs_end": splines.nurbs_end,
     **{name: cycles.handler(name) for name in cycles.CYCLES},
     "stop": lambda m, r, code: program.stop(m, code),
 }

@@ -14,6 +14,7 @@ from collections.abc import Callable
 from ..config.ini import Ini, ini_parameter
 from ..config.tooltable import ToolEntry
 from ..errors import NgcRuntimeError
+from ..language.codes import G_NURBS_END
 from ..language.parser import MAX_PARAMETER
 from .frames import to_machine
 from .state import AXES, State
@@ -54,7 +55,8 @@ PREDEFINED: dict[str, Getter] = {
     "_vmajor": lambda s: 2.9,
     "_vminor": lambda s: 0.0,
     "_line": lambda s: float(s.line),
-    "_motion_mode": lambda s: float(s.motion),
+    # (after G5.3 the mode is none: rs274 reads -1)
+    "_motion_mode": lambda s: -1.0 if s.motion == G_NURBS_END else float(s.motion),
     "_plane": lambda s: float(s.plane),
     "_ccomp": lambda s: float(s.ccomp),
     "_metric": _flag("metric", True),

@@ -52,6 +52,8 @@ class State:
         "motion",
         "naive_tolerance",
         "orient_offset",
+        "nurbs",
+        "nurbs_order",
         "path_tolerance",
         "plane",
         "pos",
@@ -62,6 +64,7 @@ class State:
         "speed",
         "speed_override",
         "spindle",
+        "spline_pq",
         "tlo",
         "tool_changed",
         "tool_index",
@@ -89,6 +92,12 @@ class State:
         self.naive_tolerance = 0.0  # G64 Q
         self.retract_r = True  # G99 True (R plane, as rs274 starts), G98 False
         self.ccomp = 400  # G40 400
+        # Splines (handlers/splines.py): the control points (X, Y, weight) of the G5.2 block
+        # being read and its order (L); the P and Q of the last G5, which a G5 without I and J
+        # continues from.
+        self.nurbs: list[tuple[float, float, float]] = []
+        self.nurbs_order = 3
+        self.spline_pq = (0.0, 0.0)
         # Canned cycles (handlers/cycles.py): the sticky R, Z and P words of the last cycle, as
         # given (relative in G91; not converted by G20 / G21), and the drill axis' initial level
         # of a series of cycles, which holds while the motion mode stays ``cycle_code``, the last

@@ -67,6 +67,7 @@ M_STATE = 11
 
 G_CANCEL_MOTION = 800  # G80: gives way to another motion code on its line
 G_MACHINE_COORDINATES = 530  # G53: modifies the line's motion
+G_NURBS_END = 53  # G5.3: ends a G5.2 NURBS block; the motion mode after it is none (rs274's -1)
 
 # Steps of the order of execution (overview.adoc, "G-code Order of Execution"); the words F, S
 # and T and the comment have theirs too (WORD_STEPS).
@@ -127,7 +128,15 @@ def _cycle(handler: str | None, uses: str) -> Code:
     """A canned cycle: it needs an axis word, and no rotary one (see interp/check.py)."""
     return Code(G_MOTION, STEP_MOTION, handler, uses, requires=_AXES,
                 missing="All axes missing with motion code", comp_refusal=CYCLE_COMP, cycle=True)
-_SPLINE_COMP = "Cannot convert spline with cutter radius compensation"
+SPLINE_COMP = "Cannot convert spline with cutter radius compensation"
+
+
+def _spline(handler: str, uses: str) -> Code:
+    """G5 / G5.1: a motion that needs an axis word and is refused with compensation on."""
+    return Code(G_MOTION, STEP_MOTION, handler, uses, requires=_AXES,
+                missing="All axes missing with motion code", comp_refusal=SPLINE_COMP)
+
+
 _PROBE_COMP = "Cannot probe with cutter radius comp on"
 _NOT_G0_G1 = "Bug code not g0 or g1"  # rs274's words for G33.1 and G76 with compensation on
 
@@ -157,9 +166,10 @@ _G: dict[int, Code] = {
     10: _motion("feed"),
     20: _motion("arc", _ARC_WORDS),
     30: _motion("arc", _ARC_WORDS),
-    50: Code(G_MOTION, STEP_MOTION, None, "ijpq", comp_refusal=_SPLINE_COMP),  # G5 cubic spline
-    51: _no_motion("ij", _SPLINE_COMP),  # G5.1 quadratic spline
-    52: _motion(None, "pl"),  # G5.2 NURBS
+    50: _spline("cubic_spline", "ijpq"),  # G5 cubic spline
+    51: _spline("quadratic_spline", "ij"),  # G5.1 quadratic spline
+    52: _motion("nurbs", "pl"),  # G5.2 NURBS block: its lines, the control points
+    53: _motion("nurbs_end"),  # G5.3 ends it (checked as if not on its line: see interp/check.py)
     330: Code(G_MOTION, STEP_MOTION, "sync_feed", "k$", requires=_AXES,  # G33
               missing="All axes missing with motion code"),
     331: Code(G_MOTION, STEP_MOTION, "rigid_tap", "ik$", requires=_AXES,  # G33.1 rigid tap
