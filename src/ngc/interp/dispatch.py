@@ -18,7 +18,7 @@ from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
 from .check import implied_motion
-from .handlers import ccomp, coordinates, cycles, modes, motion, program, tools
+from .handlers import ccomp, coordinates, cycles, modes, motion, probe, program, tools
 from .machine import Machine
 
 Handler = Callable[[Machine, Words, int], None]
@@ -115,6 +115,7 @@ _HANDLERS: dict[str, Handler] = {
     "feed": _feed,
     "arc": _arc,
     "cancel_motion": _cancel_motion,
+    "probe": probe.straight_probe,
     **{name: cycles.handler(name) for name in cycles.CYCLES},
     "stop": lambda m, r, code: program.stop(m, code),
 }
