@@ -30,6 +30,7 @@ import random
 from collections.abc import Callable
 
 import contour
+import probing
 
 AXES = "xyz"
 # plane code -> (first axis, second axis, normal axis, first offset letter, second offset letter)
@@ -1317,6 +1318,18 @@ def st_drill(g: Gen) -> None:
 CYCLES: list[tuple[float, Callable[[Gen], None]]] = [*MOTION, (25, st_drill)]
 
 
+PROBE: list[tuple[float, Callable[[Gen], None]]] = [
+    *MOTION, (20, probing.st_probe), (3, probing.st_probe_grid)]
+# Probes among offsets, rotations, G53 and homing: the probe's start is the canon's point.
+PROBE_OFFSETS: list[tuple[float, Callable[[Gen], None]]] = [
+    *OFFSETS, (15, probing.st_probe), (2, probing.st_probe_grid)]
+
+
+def gen_probe(seed: int) -> str:
+    table = PROBE if seed % 3 else PROBE_OFFSETS
+    return text_of(_program("probe", seed, table, 3, 25).lines)
+
+
 def gen_cycles(seed: int) -> str:
     return text_of(_program("cycles", seed, CYCLES, 3, 25).lines)
 
@@ -1523,6 +1536,7 @@ MUTATIONS: list[tuple[float, Callable[[Gen, list[str]], None]]] = [
     (2, mu_bad_oword),
     (2, mu_bad_value),
     (1.5, mu_drop_word),
+    (1.5, probing.mu_probe),
 ]
 
 
@@ -1552,6 +1566,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "tools": gen_tools,
     "comp": gen_comp,
     "cycles": gen_cycles,
+    "probe": gen_probe,
 }
 
 
