@@ -39,9 +39,7 @@ def snapshot(root: Path) -> dict[str, bytes]:
 
 
 # Known differences, each with its reason; strict, so a case that starts passing is noticed.
-KNOWN = {
-    "probe-open-close-comments": "G38.2 probing is not implemented yet",
-}
+KNOWN: dict[str, str] = {}
 
 
 def _cases() -> list[object]:

@@ -48,6 +48,7 @@ from .errors import NgcError
 from .interp.interpreter import Interpreter
 
 if TYPE_CHECKING:
+    from .config.probe import Probe
     from .report import CheckResult, Summary, check_file, summarize
 
 __version__ = "0.1.0"
@@ -65,11 +66,13 @@ __all__ = [
 ]
 
 
-def interpret(text: str, sink: Sink, *, file: str | None = None) -> None:
+def interpret(text: str, sink: Sink, *, file: str | None = None, probe: Probe | None = None) -> None:
     """Interpret a whole program given as text, sending canonical operations to ``sink``, and
     flush the sink (also when the program stops with an error).
 
-    Raises :class:`NgcError` at the first error; ``file`` is the name errors carry.
+    Raises :class:`NgcError` at the first error; ``file`` is the name errors carry; ``probe`` is
+    a simulated probe input for G38.2-G38.5 (:class:`ngc.config.probe.Surfaces`, e.g. from
+    ``read_probe_file``; None: rs274's probe, which never trips).
 
     >>> import io
     >>> from ngc.canon.text import TextSink
@@ -78,7 +81,7 @@ def interpret(text: str, sink: Sink, *, file: str | None = None) -> None:
     >>> out.getvalue().splitlines()[7]
     '    8 N..... STRAIGHT_FEED(2.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)'
     """
-    interp = Interpreter(sink)
+    interp = Interpreter(sink, probe=probe)
     try:
         interp.startup()
         interp.run(text.splitlines(), file=file)

@@ -179,6 +179,10 @@ def _machine_options() -> argparse.ArgumentParser:
                        ";comment, inches); default: rs274's sample table (tools 1, 2, 3, 99999)")
     group.add_argument("-v", metavar="VARS", dest="var_file",
                        help="read the parameter file (only ngc rs274 writes it back)")
+    group.add_argument("--probe", metavar="FILE", dest="probe_file",
+                       help="a simulated probe input for G38.2-G38.5: a TOML file of the solids "
+                       "the probe touches (planes, height grids, boxes, cylinders; see README); "
+                       "default: rs274's probe, which never trips")
     group.add_argument("--max-iterations", metavar="N", type=_positive,
                        default=DEFAULT_MAX_ITERATIONS,
                        help="the work budget: loop iterations and subroutine calls a run may make "
@@ -198,7 +202,8 @@ def _setup(command: str, options: argparse.Namespace) -> tuple[MachineOptions, S
     """The machine inputs of the command line, loaded; raises :class:`NgcConfigError`.  What
     rs274 would report about the INI file's settings is printed as a warning."""
     machine = MachineOptions(ini_file=options.ini_file, tool_table=options.tool_table,
-                             var_file=options.var_file, max_iterations=options.max_iterations)
+                             var_file=options.var_file, max_iterations=options.max_iterations,
+                             probe_file=options.probe_file)
     setup = load_setup(machine)
     for message in setup.settings.messages:
         sys.stderr.write(f"ngc {command}: warning: {message}\n")

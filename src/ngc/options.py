@@ -14,6 +14,9 @@
     a parameter file (LinuxCNC's ``.var``), loaded with :func:`read_var_file` and
     :meth:`Interpreter.load_parameters`.  Only ``rs274`` writes it back; ``canon`` and ``check``
     read it only.
+``--probe FILE``
+    a simulated probe input for G38.2-G38.5 (:mod:`ngc.config.probe`: the solids the probe
+    touches).  ``canon`` and ``check`` only: ``rs274``'s probe never trips, as rs274's does.
 ``--max-iterations N``
     the work budget: loop iterations and subroutine calls a run may make before it stops with
     an error (a runaway program).
@@ -31,6 +34,7 @@ from typing import NamedTuple
 
 from .canon.ops import Sink
 from .config.ini import Ini, Rs274ngcSettings
+from .config.probe import Surfaces, read_probe_file
 from .config.tooltable import DEFAULT_TABLE, Tools, ToolTable, read_tool_table
 from .config.varfile import read_var_file
 from .errors import NgcConfigError
@@ -45,6 +49,7 @@ class MachineOptions(NamedTuple):
     tool_table: str | None = None
     var_file: str | None = None
     max_iterations: int = DEFAULT_MAX_ITERATIONS
+    probe_file: str | None = None
 
 
 class Setup(NamedTuple):
@@ -54,6 +59,7 @@ class Setup(NamedTuple):
     ini: Ini | None = None
     parameters: dict[int, float] | None = None
     tools: ToolTable = DEFAULT_TABLE
+    probe: Surfaces | None = None
 
 
 def parse_positive(text: str) -> int | None:
@@ -93,6 +99,7 @@ def load_setup(options: MachineOptions) -> Setup:
         (options.ini_file, "INI file"),
         (options.tool_table, "tool table"),
         (options.var_file, "parameter file"),
+        (options.probe_file, "probe file"),
     ):
         if path is not None:
             require_regular_file(path, what)
@@ -107,7 +114,8 @@ def load_setup(options: MachineOptions) -> Setup:
     tools = DEFAULT_TABLE
     if options.tool_table is not None:
         tools = read_tool_table(options.tool_table, strict=True)
-    return Setup(Rs274ngcSettings.from_ini(ini, os.getcwd()), ini, parameters, tools)
+    probe = None if options.probe_file is None else read_probe_file(options.probe_file)
+    return Setup(Rs274ngcSettings.from_ini(ini, os.getcwd()), ini, parameters, tools, probe)
 
 
 def new_interpreter(
@@ -121,7 +129,7 @@ def new_interpreter(
 ) -> Interpreter:
     """An interpreter with the options and loaded inputs applied (it has emitted nothing yet)."""
     interp = Interpreter(sink, block_delete=block_delete, max_iterations=options.max_iterations,
-                         fast=fast, write_files=write_files)
+                         fast=fast, write_files=write_files, probe=setup.probe)
     interp.configure(setup.settings, setup.ini)
     interp.machine.state.tools = Tools(setup.tools)
     if setup.parameters is not None:

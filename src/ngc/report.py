@@ -107,6 +107,7 @@ class Summarizer:
         self._handlers: dict[type, Callable[[Op], None]] = {
             ops.StraightTraverse: self._traverse,
             ops.StraightFeed: self._feed,
+            ops.StraightProbe: self._probe,
             ops.ArcFeed: self._arc,
             ops.SelectPlane: self._plane,
             ops.UseLengthUnits: self._length_units,
@@ -193,6 +194,13 @@ class Summarizer:
 
     def _feed(self, op: Op) -> None:
         assert isinstance(op, ops.StraightFeed)
+        self._feeds += 1
+        self._feed_length += self._line_to((op.x, op.y, op.z))
+
+    def _probe(self, op: Op) -> None:
+        """A straight probe counts as a feed move to its programmed point (where it stops is not
+        in the call)."""
+        assert isinstance(op, ops.StraightProbe)
         self._feeds += 1
         self._feed_length += self._line_to((op.x, op.y, op.z))
 

@@ -10,6 +10,8 @@ same text.  Kinds:
 ``failing``  a program of another kind with one mutation meant to make it fail midway
 ``cycles``   the motion programs with series of holes drilled by every canned cycle
 ``splines``  the motion programs with G5 and G5.1 curves and G5.2 ... G5.3 NURBS blocks
+``probe``    the motion and offsets programs with straight probes G38.2-G38.5 and probe grids
+``threading`` spindle modes, M19, G33 passes, G33.1 taps (``spindlesync.py``)
 
 How it is built: a program is a preamble, a body and an ending.  The body is a sequence of
 *statements*; each kind has a table of ``(weight, function)`` entries (``MOTION``, ``OFFSETS``,
@@ -31,6 +33,7 @@ import random
 from collections.abc import Callable
 
 import contour
+import probing
 import spindlesync
 import splines
 
@@ -1367,6 +1370,18 @@ def _cycle_plane_change(g: Gen, code: str) -> tuple[str, str, str]:
 CYCLES: list[tuple[float, Callable[[Gen], None]]] = [*MOTION, (25, st_drill)]
 
 
+PROBE: list[tuple[float, Callable[[Gen], None]]] = [
+    *MOTION, (20, probing.st_probe), (3, probing.st_probe_grid)]
+# Probes among offsets, rotations, G53 and homing: the probe's start is the canon's point.
+PROBE_OFFSETS: list[tuple[float, Callable[[Gen], None]]] = [
+    *OFFSETS, (15, probing.st_probe), (2, probing.st_probe_grid)]
+
+
+def gen_probe(seed: int) -> str:
+    table = PROBE if seed % 3 else PROBE_OFFSETS
+    return text_of(_program("probe", seed, table, 3, 25).lines)
+
+
 def gen_cycles(seed: int) -> str:
     return text_of(_program("cycles", seed, CYCLES, 3, 25).lines)
 
@@ -1584,6 +1599,7 @@ MUTATIONS: list[tuple[float, Callable[[Gen, list[str]], None]]] = [
     (2, mu_bad_oword),
     (2, mu_bad_value),
     (1.5, mu_drop_word),
+    (1.5, probing.mu_probe),
 ]
 
 
@@ -1615,6 +1631,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "cycles": gen_cycles,
     "threading": spindlesync.gen_threading,
     "splines": gen_splines,
+    "probe": gen_probe,
 }
 
 

@@ -86,6 +86,26 @@ class Dwell(NamedTuple):
     seconds: float
 
 
+class StraightProbe(NamedTuple):
+    """G38.2-G38.5: a straight move toward the programmed point that stops when the probe input
+    changes (the point where it stops is not part of the call)."""
+
+    x: float
+    y: float
+    z: float
+    a: float
+    b: float
+    c: float
+
+
+class TurnProbeOn(NamedTuple):
+    """No arguments."""
+
+
+class TurnProbeOff(NamedTuple):
+    """No arguments."""
+
+
 # -- modes ----------------------------------------------------------------------------------------
 class UseLengthUnits(NamedTuple):
     units: str  # CANON_UNITS_MM | CANON_UNITS_INCHES
@@ -355,6 +375,9 @@ TEMPLATES: Mapping[type, str] = MappingProxyType(
         ArcFeed: "ARC_FEED(%.4f, %.4f, %.4f, %.4f, %d, %.4f, %.4f, %.4f, %.4f)",
         NurbsFeed: "NURBS_FEED(%d, ...)",
         Dwell: "DWELL(%.4f)",
+        StraightProbe: "STRAIGHT_PROBE(%.4f, %.4f, %.4f, %.4f, %.4f, %.4f)",
+        TurnProbeOn: "TURN_PROBE_ON()",
+        TurnProbeOff: "TURN_PROBE_OFF()",
         UseLengthUnits: "USE_LENGTH_UNITS(%s)",
         SelectPlane: "SELECT_PLANE(%s)",
         SetFeedRate: "SET_FEED_RATE(%.4f)",

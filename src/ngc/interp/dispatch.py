@@ -18,8 +18,8 @@ from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
 from .check import implied_motion
-from .handlers import (ccomp, coordinates, cycles, modes, motion, program, spindle, splines,
-                       threading, tools)
+from .handlers import (ccomp, coordinates, cycles, modes, motion, probe, program, spindle,
+                       splines, threading, tools)
 from .machine import Machine
 
 Handler = Callable[[Machine, Words, int], None]
@@ -133,6 +133,7 @@ _HANDLERS: dict[str, Handler] = {
     "quadratic_spline": splines.quadratic,
     "nurbs": splines.nurbs,
     "nurbs_end": splines.nurbs_end,
+    "probe": probe.straight_probe,
     **{name: cycles.handler(name) for name in cycles.CYCLES},
     "stop": lambda m, r, code: program.stop(m, code),
 }

@@ -32,6 +32,7 @@ from .state import State
 if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
     from ..config.ini import Ini, Rs274ngcSettings
+    from ..config.probe import Probe
 
 # rs274 reads lines into a 256-byte buffer: a line of 253 characters or more is refused.
 MAX_LINE = 252
@@ -56,14 +57,18 @@ class Interpreter:
         table: CodeTable = LINUXCNC,
         fast: bool = True,
         write_files: bool = True,
+        probe: Probe | None = None,
     ) -> None:
         """``max_iterations`` is the work budget of a run: loop iterations and subroutine calls
         (a runaway program is an error);
         ``max_call_depth`` the subroutine levels below the main program (rs274: 9); ``table`` is
         the dialect's code table; ``fast=False`` sends every line down the general path (the
         fast path gives the same results; see :mod:`.fastpath`); ``write_files=False`` keeps the
-        program's log files (LOGOPEN, PROBEOPEN) from being written."""
+        program's log files (LOGOPEN, PROBEOPEN) from being written; ``probe`` is a simulated probe
+        input for G38.2-G38.5 (:class:`ngc.config.probe.Surfaces`; None: rs274's, which never
+        trips)."""
         self.machine = m = Machine(sink, write_files)
+        m.probe = probe
         self.sink = sink
         self.state: State = m.state
         self.state.blocks_deleted = block_delete

@@ -17,6 +17,7 @@ from .state import State
 
 if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
+    from ..config.probe import Probe
     from ..config.tooltable import ToolEntry, Tools
     from .comp import Compensation
 
@@ -25,7 +26,7 @@ class Machine:
     """State, parameters, the sink, and the files a program opens (logs)."""
 
     __slots__ = ("comp", "encoding", "ended", "held", "label", "line", "log", "move", "params",
-                 "probe_log", "sink", "state", "write_files")
+                 "probe", "probe_log", "sink", "state", "write_files")
 
     def __init__(self, sink: Sink, write_files: bool = True) -> None:
         self.sink = sink
@@ -51,6 +52,8 @@ class Machine:
         # holds back until the next move decides where the held move ends.
         self.comp: Compensation | None = None
         self.held: list[Any] = []
+        # The simulated probe input of G38.2-G38.5 (None: rs274's, which never trips).
+        self.probe: Probe | None = None
 
     @property
     def tools(self) -> Tools:

@@ -141,6 +141,12 @@ _PROBE_COMP = "Cannot probe with cutter radius comp on"
 _NOT_G0_G1 = "Bug code not g0 or g1"  # rs274's words for G33.1 and G76 with compensation on
 
 
+def _probe() -> Code:
+    """G38.2-G38.5 straight probes (interp/handlers/probe.py); polar words count as axis words."""
+    return Code(G_MOTION, STEP_MOTION, "probe", requires=_AXES + "@^",
+                missing="All axes missing with motion code", comp_refusal=_PROBE_COMP)
+
+
 def _io(uses: str, what: str) -> Code:
     return _no(M_IO, STEP_IO, uses, f"Cannot {what} with cutter radius compensation on")
 
@@ -174,10 +180,10 @@ _G: dict[int, Code] = {
               missing="All axes missing with motion code"),
     331: Code(G_MOTION, STEP_MOTION, "rigid_tap", "ik$", requires=_AXES,  # G33.1 rigid tap
               missing="All axes missing with motion code"),
-    382: _no_motion("", _PROBE_COMP),
-    383: _no_motion("", _PROBE_COMP),
-    384: _no_motion("", _PROBE_COMP),
-    385: _no_motion("", _PROBE_COMP),
+    382: _probe(),
+    383: _probe(),
+    384: _probe(),
+    385: _probe(),
     730: _cycle("chip_break", "rlq"),
     740: _cycle("tap_left", "rp"),  # no L: rs274 refuses it with G74
     760: _no_motion("ijklpqrhe$", _NOT_G0_G1),

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 from ...canon import ops
 from ...errors import NgcSemanticError
 from ..state import AXES, LINEAR, MM_PER_INCH
-from . import ccomp
+from . import ccomp, tools
 
 if TYPE_CHECKING:
     from ..machine import Machine
@@ -128,12 +128,18 @@ def units(it: Machine, code: int) -> None:
     st = it.state
     metric = code == 210
     if metric != st.metric:
+        if not metric:
+            # rs274's canon divides its point by 25.4 where the interpreter multiplies by
+            # 1/25.4: the last bit may differ, which a probe (or M6) taking the canon's point shows
+            tools.hold_canon(st)
         k = MM_PER_INCH if metric else 1.0 / MM_PER_INCH
         for vec in (st.pos, st.g5x, st.g92):
             for i in range(AXES):
                 if LINEAR[i]:
                     vec[i] *= k
         st.metric = metric
+        if not metric:
+            tools.held(st)
     it.emit(ops.UseLengthUnits("CANON_UNITS_MM" if metric else "CANON_UNITS_INCHES"))
 
 
