@@ -30,6 +30,7 @@ import random
 from collections.abc import Callable
 
 import contour
+import state
 
 AXES = "xyz"
 # plane code -> (first axis, second axis, normal axis, first offset letter, second offset letter)
@@ -1552,6 +1553,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "tools": gen_tools,
     "comp": gen_comp,
     "cycles": gen_cycles,
+    "state": state.gen_state,
 }
 
 

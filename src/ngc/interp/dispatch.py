@@ -17,6 +17,7 @@ from ..errors import NgcSemanticError
 from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
+from . import context
 from .check import implied_motion
 from .handlers import ccomp, coordinates, cycles, modes, motion, program, tools
 from .machine import Machine
@@ -117,6 +118,7 @@ _HANDLERS: dict[str, Handler] = {
     "cancel_motion": _cancel_motion,
     **{name: cycles.handler(name) for name in cycles.CYCLES},
     "stop": lambda m, r, code: program.stop(m, code),
+    "modal_state": lambda m, r, code: context.m_code(m, code),
 }
 
 
@@ -188,8 +190,11 @@ class Dispatcher:
     @staticmethod
     def run(m: Machine, r: Words, plan: list[tuple[int, Handler, int]]) -> None:
         """Run the steps of :meth:`plan` (then the position an M6 or M61 line leaves)."""
-        for _, fn, code in plan:
-            fn(m, r, code)
+        try:
+            for _, fn, code in plan:
+                fn(m, r, code)
+        except context.LineReplaced:
+            return  # M72 restored the modal state: its block was replaced (interp/context.py)
         if m.state.tool_changed:
             tools.canon_position(m.state)
             if m.comp is not None:

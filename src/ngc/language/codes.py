@@ -268,10 +268,10 @@ _M: dict[int, Code] = {
     66: _io("plqe", "wait for digital input"),
     67: _io("eq", "set motion analog output"),
     68: _io("eq", "set auxiliary analog output"),
-    70: _no(M_STATE, STEP_STATE),
-    71: _no(M_STATE, STEP_STATE),
-    72: _no(M_STATE, STEP_STATE),
-    73: _no(M_STATE, STEP_STATE),
+    70: Code(M_STATE, STEP_STATE, "modal_state"),
+    71: Code(M_STATE, STEP_STATE, "modal_state"),
+    72: Code(M_STATE, STEP_STATE, "modal_state"),
+    73: Code(M_STATE, STEP_STATE, "modal_state"),
     98: Code(M_USER, STEP_USER_M, "subprogram", "pl"),  # run by the control flow
     99: Code(M_USER, STEP_USER_M, "subprogram"),
 }
