@@ -126,7 +126,7 @@ def st_call(g: StateGen) -> None:
 
 
 STATEMENTS = [(4, st_modes), (4, st_save), (2, st_move), (1.5, st_dump), (0.5, st_comment), (0.4, st_comp),
-              (0, st_output)]
+              (1.2, st_output)]
 
 
 def _body(g: StateGen, count: int, calls: bool) -> None:

@@ -19,7 +19,7 @@ from ..language.codes import CodeTable
 from ..language.words import Words
 from . import context
 from .check import implied_motion
-from .handlers import ccomp, coordinates, cycles, modes, motion, program, tools
+from .handlers import ccomp, coordinates, cycles, io, modes, motion, program, tools
 from .machine import Machine
 
 Handler = Callable[[Machine, Words, int], None]
@@ -119,6 +119,9 @@ _HANDLERS: dict[str, Handler] = {
     **{name: cycles.handler(name) for name in cycles.CYCLES},
     "stop": lambda m, r, code: program.stop(m, code),
     "modal_state": lambda m, r, code: context.m_code(m, code),
+    "output_bit": io.output_bit,
+    "output_value": io.output_value,
+    "wait_input": io.wait_input,
 }
 
 
@@ -247,6 +250,21 @@ def _bind(row: codes.Code, code_name: str, handlers: Mapping[str, Handler]) -> H
     if not name:
         return None
     try:
-        return handlers[name]
+        fn = handlers[name]
     except KeyError:
         raise NgcSemanticError(f"No handler named {name!r} for a code of the table") from None
+    if row.comp_refusal and not row.cycle and name not in _REFUSE_THEMSELVES:
+        return _refusing(_refusal(row.comp_refusal), fn)
+    return fn
+
+
+# Handlers that refuse their code while compensation is on by themselves, after checking their
+# words (as a cycle's handler does).
+_REFUSE_THEMSELVES = frozenset({"wait_input"})
+
+
+def _refusal(message: str) -> Handler:
+    def check(m: Machine, r: Words, code: int) -> None:
+        ccomp.refuse(m, message)
+
+    return check

@@ -130,8 +130,12 @@ _PROBE_COMP = "Cannot probe with cutter radius comp on"
 _NOT_G0_G1 = "Bug code not g0 or g1"  # rs274's words for G33.1 and G76 with compensation on
 
 
-def _io(uses: str, what: str) -> Code:
-    return _no(M_IO, STEP_IO, uses, f"Cannot {what} with cutter radius compensation on")
+WAIT_COMP = "Cannot wait for digital input with cutter radius compensation on"
+
+
+def _io(uses: str, what: str, handler: str) -> Code:
+    return Code(M_IO, STEP_IO, handler, uses,
+                comp_refusal=f"Cannot {what} with cutter radius compensation on")
 
 
 _G: dict[int, Code] = {
@@ -261,13 +265,13 @@ _M: dict[int, Code] = {
     51: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p$"),
     52: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
     53: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
-    62: _io("p", "set motion output"),
-    63: _io("p", "set motion digital output"),
-    64: _io("p", "set auxiliary digital output"),
-    65: _io("p", "set auxiliary digital output"),
-    66: _io("plqe", "wait for digital input"),
-    67: _io("eq", "set motion analog output"),
-    68: _io("eq", "set auxiliary analog output"),
+    62: _io("p", "set motion output", "output_bit"),
+    63: _io("p", "set motion digital output", "output_bit"),
+    64: _io("p", "set auxiliary digital output", "output_bit"),
+    65: _io("p", "set auxiliary digital output", "output_bit"),
+    66: Code(M_IO, STEP_IO, "wait_input", "plqe", comp_refusal=WAIT_COMP),
+    67: _io("eq", "set motion analog output", "output_value"),
+    68: _io("eq", "set auxiliary analog output", "output_value"),
     70: Code(M_STATE, STEP_STATE, "modal_state"),
     71: Code(M_STATE, STEP_STATE, "modal_state"),
     72: Code(M_STATE, STEP_STATE, "modal_state"),
