@@ -76,6 +76,10 @@ def _home(m: Machine, r: Words, code: int) -> None:
     motion.traverse(m, home)
 
 
+def _user_m(m: Machine, r: Words, code: int) -> None:
+    raise NgcSemanticError(f"Unknown m code used: M{code}")  # no user M file (USER_M_PATH)
+
+
 def _subprogram(m: Machine, r: Words, code: int) -> None:
     raise AssertionError("M98/M99 are run by the control flow")
 
@@ -89,6 +93,7 @@ _HANDLERS: dict[str, Handler] = {
     "coolant": lambda m, r, code: modes.coolant(m, code),
     "overrides": lambda m, r, code: modes.overrides(m, code, r.w.get("p")),
     "subprogram": _subprogram,
+    "user_m": _user_m,
     "dwell": lambda m, r, code: modes.dwell(m, r),
     "plane": lambda m, r, code: modes.plane(m, code),
     "units": _units,

@@ -244,6 +244,8 @@ _G: dict[int, Code] = {
     80: Code(G_LATHE, STEP_LATHE, "lathe_mode"),
 }
 
+M_USER_LAST = 199
+
 _M: dict[int, Code] = {
     0: Code(M_STOP, STEP_STOP, "stop"),
     1: Code(M_STOP, STEP_STOP, "stop"),
@@ -278,6 +280,9 @@ _M: dict[int, Code] = {
     73: Code(M_STATE, STEP_STATE, "modal_state"),
     98: Code(M_USER, STEP_USER_M, "subprogram", "pl"),  # run by the control flow
     99: Code(M_USER, STEP_USER_M, "subprogram"),
+    # M100-M199: user M codes, read as codes of their group; with no user M file they fail at
+    # their step (after the line's comment, F and S have run)
+    **{code: Code(M_USER, STEP_USER_M, "user_m", "pq") for code in range(100, M_USER_LAST + 1)},
 }
 
 # The words that take a step of their own (and a handler), as codes do.
