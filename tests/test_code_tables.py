@@ -28,7 +28,6 @@ SPEC = Path(__file__).resolve().parent.parent.parent / "shared" / "spec"
 STILL_REFUSED = {
     "G70", "G71",
     "G71.1", "G71.2", "G72", "G72.1", "G72.2", "G76",
-    "M62", "M63", "M64", "M65", "M66", "M67", "M68", "M70", "M71", "M72", "M73",
 }
 # Ranges of numbers rather than codes of the table (see the module docstring).
 NOT_TABLE_CODES = {"M100-M199"}

@@ -36,6 +36,7 @@ import contour
 import probing
 import spindlesync
 import splines
+import state
 
 AXES = "xyz"
 # plane code -> (first axis, second axis, normal axis, first offset letter, second offset letter)
@@ -1632,6 +1633,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "threading": spindlesync.gen_threading,
     "splines": gen_splines,
     "probe": gen_probe,
+    "state": state.gen_state,
 }
 
 

@@ -343,6 +343,33 @@ class LogClose(NamedTuple):
     """No arguments."""
 
 
+# -- digital and analog outputs (M62-M65, M67, M68) ---------------------------------------------
+class SetMotionOutputBit(NamedTuple):
+    bit: int
+
+
+class ClearMotionOutputBit(NamedTuple):
+    bit: int
+
+
+class SetAuxOutputBit(NamedTuple):
+    bit: int
+
+
+class ClearAuxOutputBit(NamedTuple):
+    bit: int
+
+
+class SetMotionOutputValue(NamedTuple):
+    channel: int
+    value: float
+
+
+class SetAuxOutputValue(NamedTuple):
+    channel: int
+    value: float
+
+
 class ProgramStop(NamedTuple):
     """No arguments."""
 
@@ -425,6 +452,12 @@ TEMPLATES: Mapping[type, str] = MappingProxyType(
         LogAppend: 'LOGAPPEND("%s")',
         Log: 'LOG("%s")',
         LogClose: "LOGCLOSE()",
+        SetMotionOutputBit: "SET_MOTION_OUTPUT_BIT(%d)",
+        ClearMotionOutputBit: "CLEAR_MOTION_OUTPUT_BIT(%d)",
+        SetAuxOutputBit: "SET_AUX_OUTPUT_BIT(%d)",
+        ClearAuxOutputBit: "CLEAR_AUX_OUTPUT_BIT(%d)",
+        SetMotionOutputValue: "SET_MOTION_OUTPUT_VALUE(%d,%f)",
+        SetAuxOutputValue: "SET_AUX_OUTPUT_VALUE(%d,%f)",
         ProgramStop: "PROGRAM_STOP()",
         OptionalProgramStop: "OPTIONAL_PROGRAM_STOP()",
         PalletShuttle: "PALLET_SHUTTLE()",

@@ -17,9 +17,22 @@ from ..errors import NgcSemanticError
 from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
+from . import context
 from .check import implied_motion
-from .handlers import (ccomp, coordinates, cycles, modes, motion, probe, program, spindle,
-                       splines, threading, tools)
+from .handlers import (
+    ccomp,
+    coordinates,
+    cycles,
+    io,
+    modes,
+    motion,
+    probe,
+    program,
+    spindle,
+    splines,
+    threading,
+    tools,
+)
 from .machine import Machine
 
 Handler = Callable[[Machine, Words, int], None]
@@ -85,6 +98,10 @@ def _home(m: Machine, r: Words, code: int) -> None:
     motion.traverse(m, home)
 
 
+def _user_m(m: Machine, r: Words, code: int) -> None:
+    raise NgcSemanticError(f"Unknown m code used: M{code}")  # no user M file (USER_M_PATH)
+
+
 def _subprogram(m: Machine, r: Words, code: int) -> None:
     raise AssertionError("M98/M99 are run by the control flow")
 
@@ -100,6 +117,7 @@ _HANDLERS: dict[str, Handler] = {
     "coolant": lambda m, r, code: modes.coolant(m, code),
     "overrides": _overrides,
     "subprogram": _subprogram,
+    "user_m": _user_m,
     "dwell": lambda m, r, code: modes.dwell(m, r),
     "plane": lambda m, r, code: modes.plane(m, code),
     "units": _units,
@@ -136,6 +154,10 @@ _HANDLERS: dict[str, Handler] = {
     "probe": probe.straight_probe,
     **{name: cycles.handler(name) for name in cycles.CYCLES},
     "stop": lambda m, r, code: program.stop(m, code),
+    "modal_state": lambda m, r, code: context.m_code(m, code),
+    "output_bit": io.output_bit,
+    "output_value": io.output_value,
+    "wait_input": io.wait_input,
 }
 
 
@@ -207,8 +229,11 @@ class Dispatcher:
     @staticmethod
     def run(m: Machine, r: Words, plan: list[tuple[int, Handler, int]]) -> None:
         """Run the steps of :meth:`plan` (then the position an M6 or M61 line leaves)."""
-        for _, fn, code in plan:
-            fn(m, r, code)
+        try:
+            for _, fn, code in plan:
+                fn(m, r, code)
+        except context.LineReplaced:
+            return  # M72 restored the modal state: its block was replaced (interp/context.py)
         if m.state.tool_changed:
             tools.canon_position(m.state)
             if m.comp is not None:
@@ -261,6 +286,21 @@ def _bind(row: codes.Code, code_name: str, handlers: Mapping[str, Handler]) -> H
     if not name:
         return None
     try:
-        return handlers[name]
+        fn = handlers[name]
     except KeyError:
         raise NgcSemanticError(f"No handler named {name!r} for a code of the table") from None
+    if row.comp_refusal and not row.cycle and name not in _REFUSE_THEMSELVES:
+        return _refusing(_refusal(row.comp_refusal), fn)
+    return fn
+
+
+# Handlers that refuse their code while compensation is on by themselves, after checking their
+# words (as a cycle's handler does).
+_REFUSE_THEMSELVES = frozenset({"wait_input"})
+
+
+def _refusal(message: str) -> Handler:
+    def check(m: Machine, r: Words, code: int) -> None:
+        ccomp.refuse(m, message)
+
+    return check

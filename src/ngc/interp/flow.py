@@ -40,8 +40,10 @@ from ..language.expressions import INT_MIN, c_int, evaluate
 from ..language.lexer import C_SPACE
 from ..language.oword import KEYWORDS, MAX_ARGS, NOTHING, PROGRAM, OWord, number_label
 from ..language.parser import Block, skim_oword
+from . import context
 from .fastpath import Compiled, Plain
 from .machine import Machine
+from .snapshot import Context
 from .source import CACHE_LINES, CHECKPOINT, ProgramReader, open_program
 
 if TYPE_CHECKING:
@@ -702,6 +704,7 @@ class Flow:
             raise NgcRuntimeError("Too many subroutine levels")
         self.again()
         self.frames.append(frame)
+        self.interp.machine.contexts.append(Context())
         self.interp.machine.state.call_level = len(self.frames) - 1
 
     def refuse(self, sub: Sub, message: str) -> NoReturn:
@@ -783,6 +786,7 @@ class Flow:
             st.value = st.value_returned = 0.0
 
     def pop(self) -> None:
+        context.leave(self.interp.machine)  # M73's restore comes first
         left = self.frames.pop()
         caller = self.frames[-1]
         # Where the caller resumes, and the last line read before (for the end-of-file message).
@@ -835,6 +839,8 @@ class Flow:
             self.again()
             f.repeats -= 1
             f.pc = sub.start + 1
+            context.leave(self.interp.machine)  # each run is a call of its own (M70-M73)
+            self.interp.machine.contexts.append(Context())
         else:
             self.pop()
         return True

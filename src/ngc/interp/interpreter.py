@@ -26,6 +26,7 @@ from .handlers import coordinates, program
 from .machine import Machine
 from .parameters import COORD_SYSTEM, DEBUG_ENABLE, G92_APPLIED, Parameters
 from .resolve import Resolved, resolve
+from .snapshot import Context
 from .source import ProgramReader
 from .state import State
 
@@ -69,6 +70,7 @@ class Interpreter:
         trips)."""
         self.machine = m = Machine(sink, write_files)
         m.probe = probe
+        m.run_text = self._run_text
         self.sink = sink
         self.state: State = m.state
         self.state.blocks_deleted = block_delete
@@ -202,6 +204,7 @@ class Interpreter:
         self.flow = self.flow.fresh()
         self.machine.state.call_level = 0
         del self.params.locals[1:]
+        self.machine.contexts = [Context()]
         numbered = enumerate(lines, 1)
         self.numbered = numbered
         number, raw = 0, ""
@@ -352,6 +355,10 @@ class Interpreter:
             self.dispatcher.convert(m, r)
         except NgcError as err:
             raise err.locate(file=self.file, line=block.line, source=block.source) from None
+
+    def _run_text(self, text: str) -> None:
+        """A line a handler has the interpreter run (an M72 restore), at the running line."""
+        self.execute(self.parse(text, self.machine.line))
 
     def _run_plain(self, w: dict[str, float], code: int | None) -> None:
         """A compiled plain line (see :meth:`FastPath.convert`)."""

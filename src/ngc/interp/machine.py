@@ -8,11 +8,13 @@ it runs, so every operation a handler emits carries its block's N column and sou
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, TextIO
 
 from ..canon.ops import mover
 from .comp import HELD
 from .parameters import COORD_SYSTEM, Parameters
+from .snapshot import Context
 from .state import State
 
 if TYPE_CHECKING:
@@ -25,8 +27,8 @@ if TYPE_CHECKING:
 class Machine:
     """State, parameters, the sink, and the files a program opens (logs)."""
 
-    __slots__ = ("comp", "encoding", "ended", "held", "label", "line", "log", "move", "params",
-                 "probe", "probe_log", "sink", "state", "write_files")
+    __slots__ = ("comp", "contexts", "encoding", "ended", "held", "label", "line", "log", "move",
+                 "params", "probe", "probe_log", "run_text", "sink", "state", "write_files")
 
     def __init__(self, sink: Sink, write_files: bool = True) -> None:
         self.sink = sink
@@ -54,6 +56,10 @@ class Machine:
         self.held: list[Any] = []
         # The simulated probe input of G38.2-G38.5 (None: rs274's, which never trips).
         self.probe: Probe | None = None
+        # M70-M73 (interp/context.py): the saved state of each call level, the main program's
+        # first; and how a restore runs a line of G code (the interpreter sets it).
+        self.contexts = [Context()]
+        self.run_text: Callable[[str], None] | None = None
 
     @property
     def tools(self) -> Tools:

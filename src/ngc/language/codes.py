@@ -147,8 +147,12 @@ def _probe() -> Code:
                 missing="All axes missing with motion code", comp_refusal=_PROBE_COMP)
 
 
-def _io(uses: str, what: str) -> Code:
-    return _no(M_IO, STEP_IO, uses, f"Cannot {what} with cutter radius compensation on")
+WAIT_COMP = "Cannot wait for digital input with cutter radius compensation on"
+
+
+def _io(uses: str, what: str, handler: str) -> Code:
+    return Code(M_IO, STEP_IO, handler, uses,
+                comp_refusal=f"Cannot {what} with cutter radius compensation on")
 
 
 _G: dict[int, Code] = {
@@ -262,6 +266,8 @@ _G: dict[int, Code] = {
     80: Code(G_LATHE, STEP_LATHE, "lathe_mode"),
 }
 
+M_USER_LAST = 199
+
 _M: dict[int, Code] = {
     0: Code(M_STOP, STEP_STOP, "stop"),
     1: Code(M_STOP, STEP_STOP, "stop"),
@@ -283,19 +289,22 @@ _M: dict[int, Code] = {
     51: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p$"),
     52: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
     53: Code(M_OVERRIDE, STEP_OVERRIDE, "overrides", "p"),
-    62: _io("p", "set motion output"),
-    63: _io("p", "set motion digital output"),
-    64: _io("p", "set auxiliary digital output"),
-    65: _io("p", "set auxiliary digital output"),
-    66: _io("plqe", "wait for digital input"),
-    67: _io("eq", "set motion analog output"),
-    68: _io("eq", "set auxiliary analog output"),
-    70: _no(M_STATE, STEP_STATE),
-    71: _no(M_STATE, STEP_STATE),
-    72: _no(M_STATE, STEP_STATE),
-    73: _no(M_STATE, STEP_STATE),
+    62: _io("p", "set motion output", "output_bit"),
+    63: _io("p", "set motion digital output", "output_bit"),
+    64: _io("p", "set auxiliary digital output", "output_bit"),
+    65: _io("p", "set auxiliary digital output", "output_bit"),
+    66: Code(M_IO, STEP_IO, "wait_input", "plqe", comp_refusal=WAIT_COMP),
+    67: _io("eq", "set motion analog output", "output_value"),
+    68: _io("eq", "set auxiliary analog output", "output_value"),
+    70: Code(M_STATE, STEP_STATE, "modal_state"),
+    71: Code(M_STATE, STEP_STATE, "modal_state"),
+    72: Code(M_STATE, STEP_STATE, "modal_state"),
+    73: Code(M_STATE, STEP_STATE, "modal_state"),
     98: Code(M_USER, STEP_USER_M, "subprogram", "pl"),  # run by the control flow
     99: Code(M_USER, STEP_USER_M, "subprogram"),
+    # M100-M199: user M codes, read as codes of their group; with no user M file they fail at
+    # their step (after the line's comment, F and S have run)
+    **{code: Code(M_USER, STEP_USER_M, "user_m", "pq") for code in range(100, M_USER_LAST + 1)},
 }
 
 # The words that take a step of their own (and a handler), as codes do.
