@@ -45,7 +45,7 @@ from ..language.parser import (
     split_plain,
     words_of,
 )
-from ..language.words import Words
+from ..language.words import Words, check_signs
 from . import comp
 from .check import check
 from .dispatch import Dispatcher
@@ -197,6 +197,7 @@ class FastPath:
         if code is None and not _AXES.isdisjoint(w):
             code = st.motion  # the modal motion the axis words run (checked before F runs)
             if code == G_CANCEL_MOTION:
+                check_signs(w)  # a negative F or S was refused as the line was read
                 raise NgcSemanticError("Cannot use axis values without a g code that uses them")
             if code not in self._letters:  # a modal canned cycle: the general path runs it
                 r = words_of(w, None, self.table)
@@ -211,6 +212,8 @@ class FastPath:
                 st.feed = f
                 m.sink.emit(_new(ops.SetFeedRate, (f,)), m.label, m.line)
             else:
+                if f < 0.0:
+                    check_signs(w)  # refused as read, in line order: "S-1 F-1" is about S
                 modes.feed_rate(m, f)
         if "s" in w:
             modes.spindle_speed(m, w["s"])
