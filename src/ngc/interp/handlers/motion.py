@@ -174,7 +174,7 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
         if st.feed_mode == 950 and st.speed == 0.0:
             raise NgcSemanticError("Cannot feed with zero spindle speed in feed per rev mode")
     # a whole number of turns, at least 1 (checked before the line ran)
-    turns = int(w["p"]) if "p" in w else 1
+    turns = round(w["p"]) if "p" in w else 1  # within 0.001 of a whole number
     start = st.pos if compensation is None else compensation.prog
     s1, s2 = start[first], start[second]
     e1, e2 = end[first], end[second]
