@@ -11,7 +11,7 @@ from ..errors import NgcSemanticError, NgcSyntaxError
 from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
-from .handlers import spindle, threading
+from .handlers import g76, spindle, threading
 from .state import State
 
 _G10_L = (0.0, 1.0, 2.0, 10.0, 11.0, 20.0)
@@ -47,8 +47,11 @@ def check(st: State, r: Words, table: CodeTable) -> None:
             raise NgcSemanticError(row.missing)
     if non_modal == 100:
         _check_g10(r)
-    if (motion if motion is not None else implied_motion(st, r, table)) in threading.SYNCHRONIZED:
+    active = motion if motion is not None else implied_motion(st, r, table)
+    if active in threading.SYNCHRONIZED:
         threading.check(r.w)
+    elif active == g76.G76:
+        g76.check(r.w)
 
 
 def implied_motion(st: State, r: Words, table: CodeTable) -> int | None:

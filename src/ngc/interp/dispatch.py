@@ -18,7 +18,7 @@ from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
 from .check import implied_motion
-from .handlers import ccomp, coordinates, cycles, modes, motion, program, spindle, threading, tools
+from .handlers import ccomp, coordinates, cycles, g76, modes, motion, program, spindle, threading, tools
 from .machine import Machine
 
 Handler = Callable[[Machine, Words, int], None]
@@ -128,6 +128,7 @@ _HANDLERS: dict[str, Handler] = {
     "cancel_motion": _cancel_motion,
     "sync_feed": lambda m, r, code: threading.sync_feed(m, r.w, motion.end_point(m, r.w, False)),
     "rigid_tap": lambda m, r, code: threading.rigid_tap(m, r.w, motion.end_point(m, r.w, False)),
+    "threading_cycle": lambda m, r, code: g76.run(m, r.w, motion.end_point(m, r.w, False)),
     **{name: cycles.handler(name) for name in cycles.CYCLES},
     "stop": lambda m, r, code: program.stop(m, code),
 }
