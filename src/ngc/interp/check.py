@@ -34,8 +34,9 @@ def check(st: State, r: Words, table: CodeTable) -> None:
         _check_g53(st, r, motion)
     if r.others:
         active = implied_motion(st, r, table) if motion is None else motion
-        if motion is None and not r.has_axes and active in threading.SYNCHRONIZED:
-            active = None  # K alone does not run a modal G33 / G33.1 (unlike I J K in G2 / G3)
+        if motion is None and not r.has_axes and (active in threading.SYNCHRONIZED
+                                                  or active == g76.G76):
+            active = None  # I J K alone run no modal G33 / G33.1 / G76 (unlike G2 / G3)
         _check_other_words(r, active, table)
         if "p" in r.w and active in _ARCS:
             _check_turns(r.w["p"])
