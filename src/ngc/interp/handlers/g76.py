@@ -143,10 +143,11 @@ class _Cycle:
         emit = it.emit
         pos = self.pos
         y, rest = pos[1], pos[3:]
-        x0 = pos[0]
-        x_cut = x0 + (self.peak + self.side * depth)
+        offset = self.peak + self.side * depth  # the cut's offset from the drive line
+        x_cut = pos[0] + offset
         x_safe = x_cut - self.full
-        z_dir, z_off = self.z_dir, depth * self.tan
+        # the compound angle's shift: by the depth as the offset gives it back (rs274's sums)
+        z_dir, z_off = self.z_dir, abs(offset - self.peak) * self.tan
         z_start = pos[2] + z_dir * z_off
         z_stop = self.z_end - z_dir * (self.k * self.tan - z_off)
         emit(ops.StraightTraverse(x_safe, y, z_start, *rest))
