@@ -62,7 +62,8 @@ def _tap(rng: random.Random, lines: list[str]) -> None:
         lines.append(f"G33.1 Z-{_num(rng, 2, 10)} K{rng.choice([0.5, 0.7, 1.0])}{i}")
 
 
-_G76_MISTAKES = ("P", "I", "J", "K", "I0", "J0", "K<J", "A", "$1", "H-2", "L-1", "H1.5", "M5")
+_G76_MISTAKES = ("P", "I", "J", "K", "I0", "J0", "K<J", "A", "$1", "H-2", "L-1", "H1.5", "M5",
+                 "P-1")
 
 
 def _g76(rng: random.Random, lines: list[str], mistake: bool) -> None:
@@ -79,7 +80,7 @@ def _g76(rng: random.Random, lines: list[str], mistake: bool) -> None:
     if rng.random() < 0.5:
         words["R"] = rng.choice(["1", "1.5", "2", "2.5", "0.5", _num(rng, 1, 3)])
     if rng.random() < 0.5:
-        words["Q"] = rng.choice(["29.5", "30", "-29.5", "0", _num(rng, -45, 45, 1)])
+        words["Q"] = rng.choice(["29.5", "30", "-29.5", "0", "-1", _num(rng, -45, 45, 1)])
     if rng.random() < 0.4:
         words["H"] = str(rng.choice([0, 1, 2, 3, -1]))
     if rng.random() < 0.5:
@@ -105,7 +106,9 @@ def _g76(rng: random.Random, lines: list[str], mistake: bool) -> None:
 
 def _g76_mistake(rng: random.Random, words: dict[str, str]) -> None:
     pick = rng.choice(_G76_MISTAKES)
-    if pick in "PIJK":
+    if pick == "P-1":
+        words["P"] = "-1"
+    elif pick in "PIJK":
         words.pop(pick)
     elif pick == "K<J":
         words["K"] = words["J"]

@@ -7,8 +7,8 @@ full depth, R the depth degression (below 1 taken as 1), Q the compound slide an
 spring passes, E the taper length, L which ends are tapered (bit 1 the entry, bit 2 the exit),
 $ the spindle.  In G7 (diameter mode) I, J and K are diameters.
 
-* Before the line runs, after its axis word: "P word missing with G76", then "I J or K words
-  missing with G76".
+* Before the line runs, after its axis word: "P word missing with G76" (P-1 counts as missing,
+  and Q-1 as no Q), then "I J or K words missing with G76".
 * At the motion step: $ must be 0 ("Invalid D-number in G76 cycle"), the spindle must turn, no
   A, B or C word; with cutter radius compensation on (a tool of no radius) the cycle is refused;
   I not 0, J above 0, K above J.  With a tool of some radius, rs274 takes G76 for a compensated
@@ -20,6 +20,9 @@ $ the spindle.  In G7 (diameter mode) I, J and K are diameters.
   entry taper, a feed from the peak line E long), the cut synchronized at P per revolution (a
   taper at P times its slope's length per unit of Z), out by a traverse; feed override off for
   the pass.  At the end the tool goes to X Y Z by a traverse; the drive line is where it was.
+  The shift along Z is the depth the cut's X offset gives back (its offset less I) times
+  tan Q, added to the start and to the end less K tan Q, in that order: rs274's sums, which
+  show at a tie of the fifth decimal and at Q90.
 """
 
 from __future__ import annotations
@@ -42,11 +45,13 @@ _EXIT_TAPER = 2
 _DISABLE = ops.DisableFeedOverride()
 _ENABLE = ops.EnableFeedOverride()
 _STOP = ops.StopSpeedFeedSynch()
+# rs274 takes a P or Q of exactly -1 for a word not given: P-1 is missing, Q-1 is no angle.
+_ABSENT = -1.0
 
 
 def check(w: dict[str, float]) -> None:
     """G76's words, before the line runs (after the axis word the table requires)."""
-    if "p" not in w:
+    if w.get("p", _ABSENT) == _ABSENT:
         raise NgcSemanticError("P word missing with G76")
     if "i" not in w or "j" not in w or "k" not in w:
         raise NgcSemanticError("I J or K words missing with G76")
@@ -115,7 +120,8 @@ class _Cycle:
         self.k = k
         self.full = i + self.side * k  # the full depth's offset from the drive line
         self.z_dir = 1.0 if end[2] > pos[2] else -1.0
-        self.tan = math.tan(math.radians(w.get("q", 0.0)))
+        q = w.get("q", 0.0)
+        self.tan = math.tan(math.radians(q if q != _ABSENT else 0.0))
         self.pitch = w["p"]
         taper = w.get("e", 0.0)
         lword = int(w.get("l", 0.0))
@@ -149,7 +155,7 @@ class _Cycle:
         # the compound angle's shift: by the depth as the offset gives it back (rs274's sums)
         z_dir, z_off = self.z_dir, abs(offset - self.peak) * self.tan
         z_start = pos[2] + z_dir * z_off
-        z_stop = self.z_end - z_dir * (self.k * self.tan - z_off)
+        z_stop = self.z_end - z_dir * (self.k * self.tan) + z_dir * z_off
         emit(ops.StraightTraverse(x_safe, y, z_start, *rest))
         if self.entry:
             emit(_DISABLE)
