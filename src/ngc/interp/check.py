@@ -11,7 +11,7 @@ from ..errors import NgcSemanticError, NgcSyntaxError
 from ..language import codes
 from ..language.codes import CodeTable
 from ..language.words import Words
-from .handlers import spindle, threading
+from .handlers import g76, spindle, threading
 from .state import State
 
 _G10_L = (0.0, 1.0, 2.0, 10.0, 11.0, 20.0)
@@ -38,8 +38,9 @@ def check(st: State, r: Words, table: CodeTable) -> None:
         _check_g53(st, r, motion)
     if r.others:
         active = implied_motion(st, r, table) if motion is None else motion
-        if motion is None and not r.has_axes and active in threading.SYNCHRONIZED:
-            active = None  # K alone does not run a modal G33 / G33.1 (unlike I J K in G2 / G3)
+        if motion is None and not r.has_axes and (active in threading.SYNCHRONIZED
+                                                  or active == g76.G76):
+            active = None  # I J K alone run no modal G33 / G33.1 / G76 (unlike G2 / G3)
         _check_other_words(r, active, table)
         if "p" in r.w and active in _ARCS:
             _check_turns(r.w["p"])
@@ -51,8 +52,11 @@ def check(st: State, r: Words, table: CodeTable) -> None:
             raise NgcSemanticError(row.missing)
     if non_modal == 100:
         _check_g10(r)
-    if (motion if motion is not None else implied_motion(st, r, table)) in threading.SYNCHRONIZED:
+    active = motion if motion is not None else implied_motion(st, r, table)
+    if active in threading.SYNCHRONIZED:
         threading.check(r.w)
+    elif active == g76.G76:
+        g76.check(r.w)
 
 
 def _without_nurbs_end(r: Words) -> Words:

@@ -211,8 +211,9 @@ def _shown(c: Compensation, out: list[float], na: float, nb: float) -> list[floa
 
 
 # -- straight moves -------------------------------------------------------------------------------
-def straight(m: Machine, op_type: type, end: list[float]) -> None:
-    """A G0 or G1 to the programmed ``end`` while compensation is on (or just turned off)."""
+def straight(m: Machine, op_type: type, end: list[float], corner_refusal: str = "") -> None:
+    """A G0 or G1 to the programmed ``end`` while compensation is on (or just turned off).
+    ``corner_refusal``: the error of a move that may not go round an outside corner (G76)."""
     c: Compensation = m.comp  # type: ignore[assignment]
     prog = c.prog
     a, b = c.a, c.b
@@ -271,7 +272,8 @@ def straight(m: Machine, op_type: type, end: list[float]) -> None:
     # A straight corner (or a tool of no radius, which turns on the spot) leaves the held move as
     # it is, and unchecked: rs274 finds no gouge there.
     if not (-SMALL <= turn <= SMALL or r == 0.0):
-        _corner(m, c, t, turn, pa + dx, pb + dy, LINE, traverse=op_type is ops.StraightTraverse)
+        _corner(m, c, t, turn, pa + dx, pb + dy, LINE, traverse=op_type is ops.StraightTraverse,
+                refusal=corner_refusal)
     c.sa, c.sb = c.ca, c.cb
     c.pdir = t
     _take(m, c, LINE, op_type, None, end, ea + dx, eb + dy)
@@ -420,11 +422,12 @@ def _turn(before: float, tangent: float) -> float:
 
 def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float, sb: float,
             kind: int = LINE, k1: float = 0.0, k2: float = 0.0, kr: float = 0.0, rot: int = 0,
-            traverse: bool = False, la: float = 0.0, lb: float = 0.0) -> None:
+            traverse: bool = False, la: float = 0.0, lb: float = 0.0, refusal: str = "") -> None:
     """Join the held move to the next one, which starts (offset) at ``sa, sb`` with direction
     ``tangent``, ``turn`` from the held one's (a line, or an arc of center ``k1, k2``,
     compensated radius ``kr`` and direction ``rot``), not within SMALL of straight.  Before a
-    traverse, the corner is a traverse too."""
+    traverse, the corner is a traverse too; a ``refusal`` is raised instead of an outside
+    corner, once the held move is out."""
     before = c.pdir
     side = c.side
     crossing = None
@@ -437,6 +440,8 @@ def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float,
         if c.kind == LINE or kind == LINE:  # (not an arc held before an arc)
             check_held(c)
         flush(m)
+        if refusal:
+            raise NgcSemanticError(refusal)
         pos = m.state.pos
         if traverse:
             to = pos.copy()

@@ -138,7 +138,6 @@ def _spline(handler: str, uses: str) -> Code:
 
 
 _PROBE_COMP = "Cannot probe with cutter radius comp on"
-_NOT_G0_G1 = "Bug code not g0 or g1"  # rs274's words for G33.1 and G76 with compensation on
 
 
 def _probe() -> Code:
@@ -190,7 +189,8 @@ _G: dict[int, Code] = {
     385: _probe(),
     730: _cycle("chip_break", "rlq"),
     740: _cycle("tap_left", "rp"),  # no L: rs274 refuses it with G74
-    760: _no_motion("ijklpqrhe$", _NOT_G0_G1),
+    760: Code(G_MOTION, STEP_MOTION, "threading_cycle", "ijklpqrhe$", requires=_AXES,  # G76
+              missing="All axes missing with motion code"),
     700: _no(G_MOTION, STEP_MOTION, "qdep"),  # G70 lathe finishing cycle
     710: _no(G_MOTION, STEP_MOTION, "qdir"),  # G71, G71.1, G71.2 lathe roughing cycles
     711: _no(G_MOTION, STEP_MOTION, "qdir"),

@@ -79,6 +79,8 @@ def add_word(words: Words, letter: str, v: float, table: CodeTable) -> None:
             v = float(integer_value(v))
             if letter == "l" and v < 0.0:
                 raise NgcSemanticError("Negative l word used")
+            if letter == "h" and v < -1.0:  # (H-1 is read: G76 takes it as no final pass)
+                raise NgcSemanticError("Negative h word used")
         w[letter] = v
 
 
