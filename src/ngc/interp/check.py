@@ -28,10 +28,13 @@ def check(st: State, r: Words, table: CodeTable) -> None:
     g = r.g
     non_modal = g.get(codes.G_NON_MODAL)
     motion = g.get(codes.G_MOTION)
+    w = r.w
+    if "t" in w and w["t"] < 0:
+        raise NgcSemanticError("Negative tool id (tool not found)")
+    if "@" in w or "^" in w:
+        _check_polar(st, w)
     if r.has_axes:
         _check_cycle_axes(st, r, motion, table)
-    if "t" in r.w and r.w["t"] < 0:
-        raise NgcSemanticError("Negative tool id (tool not found)")
     if r.has_axes:
         _check_axis_users(st, r, motion, non_modal, table)
     if non_modal == codes.G_MACHINE_COORDINATES:
@@ -57,6 +60,15 @@ def check(st: State, r: Words, table: CodeTable) -> None:
         threading.check(r.w)
     elif active == g76.G76:
         g76.check(r.w)
+
+
+def _check_polar(st: State, w: dict[str, float]) -> None:
+    """Polar words: in the XY plane (as it is before the line), and not with an X or Y word."""
+    if st.plane != 170:
+        raise NgcSemanticError("Cannot use polar coordinate except in G17 plane")
+    for letter in "xy":
+        if letter in w:
+            raise NgcSemanticError(f"Cannot specify both polar coordinate and {letter.upper()} word")
 
 
 def _without_nurbs_end(r: Words) -> Words:
