@@ -266,6 +266,7 @@ class Interpreter:
         under way are left, the subroutines and labels forgotten (:mod:`.unwind`)."""
         if self.recover is None or isinstance(err, NgcEndOfFile) or not self.recover(err):
             return False
+        self.machine.held.clear()  # rs274 drops the moves cutter compensation holds back
         if self.flow.tape is not None:
             unwind(self.flow)
         return True

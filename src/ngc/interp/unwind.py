@@ -10,7 +10,8 @@ As the reference binary shows it (tests/golden/cases/continue-*):
 * Every subroutine definition and every control label is forgotten: a subroutine must be found
   again (defined further down, or in its file), and an ``endwhile``, ``else`` or ``endif`` whose
   opening line ran before the error is an undefined label.
-* The modes, the position and the parameters the failed line set before it failed stay set.
+* The modes, the position and the parameters the failed line set before it failed stay set;
+  the moves cutter compensation held back are dropped (the interpreter drops them).
 """
 
 from __future__ import annotations
