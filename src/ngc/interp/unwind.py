@@ -9,7 +9,8 @@ As the reference binary shows it (tests/golden/cases/continue-*):
   otherwise, or the line a skip (a false condition, a definition passed over) failed at.
 * Every subroutine definition and every control label is forgotten: a subroutine must be found
   again (defined further down, or in its file), and an ``endwhile``, ``else`` or ``endif`` whose
-  opening line ran before the error is an undefined label.
+  opening line ran before the error is an undefined label; a ``return`` in the main program is
+  refused as before any call returned.
 * The modes, the position and the parameters the failed line set before it failed stay set;
   the moves cutter compensation held back are dropped (the interpreter drops them).
 """
@@ -44,5 +45,6 @@ def unwind(flow: Flow) -> None:
     flow.subs.clear()
     flow.active.clear()
     flow.broken_while = False
+    flow.resumed = None  # as if no call had returned: ``return`` in the main program is refused
     main.labels.clear()
     main.open_whiles.clear()
