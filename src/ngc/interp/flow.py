@@ -774,6 +774,8 @@ class Flow:
         it = self.interp
         if f.sub is None:
             if self.resumed is None:  # no call has returned yet
+                # rs274 sets #<_value> first (seen when the run goes on after the error, -n 0)
+                self._set_value(ow)
                 raise NgcSemanticError(_quote(block, "not in a subroutine definition"))
             # rs274, once a call has returned: ``return`` in the main program sets #<_value>
             # and goes on; ``endsub`` is refused.

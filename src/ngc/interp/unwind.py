@@ -44,7 +44,6 @@ def unwind(flow: Flow) -> None:
     m.state.call_level = 0
     flow.subs.clear()
     flow.active.clear()
-    flow.broken_while = False
     flow.resumed = None  # as if no call had returned: ``return`` in the main program is refused
     main.labels.clear()
     main.open_whiles.clear()
