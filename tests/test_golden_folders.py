@@ -68,7 +68,7 @@ def test_golden_folder(name: str, fast: bool, tmp_path: Path, monkeypatch: pytes
     before = snapshot(work)
     monkeypatch.chdir(work)
     out, err = io.StringIO(), io.StringIO()
-    rc = rs274.run(list(args), stdout=out, stderr=err, fast=fast)
+    rc = rs274.run(list(args), stdout=out, stderr=err, fast=fast, stdin=io.StringIO())
     after = snapshot(work)
 
     expected_out = (case / "expected.out").read_text(encoding="latin-1")

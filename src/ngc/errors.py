@@ -86,6 +86,12 @@ class NgcProgramError(NgcError):
     """The program as a whole is wrong: no end, an ABORT comment, ..."""
 
 
+class NgcEndOfFile(NgcProgramError):
+    """The program ran off the end of its file: no ``%``, no ``M2``/``M30``.  rs274 told to
+    continue after errors (``-n 0``) meets it again at every read, for ever: no run goes on
+    after it."""
+
+
 class NgcOpenError(NgcProgramError):
     """The program cannot be started: it is empty or its first line cannot be read."""
 

@@ -10,8 +10,9 @@ any others: rs274 stops on it with ``Bad character '\\357' used`` and so does ``
 Differences, all on purpose: ``-h``/``--help`` prints :data:`HELP` on stdout (rs274 has no such
 option), ``--max-iterations N`` bounds the loop iterations and calls of a run, and on a terminal a long run
 shows a progress line on stderr (:mod:`ngc.progress`; never when stderr is not a terminal, so
-the output stays byte-exact).  ``-n``, ``-s`` and interactive mode are parsed but not modelled:
-ngc always runs the program in batch mode and stops at the first error.
+the output stays byte-exact).  ``-n 0`` and ``-n 1`` go on after errors as rs274 does
+(:mod:`ngc.recovery`); ``-s`` and interactive mode are parsed but not modelled: ngc always runs
+the program in batch mode.
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ from .interp.interpreter import Interpreter
 from .interp.source import ProgramReader, open_program
 from .options import MachineOptions, Setup, new_interpreter, parse_positive
 from .progress import Progress, descriptor, is_terminal
+from .recovery import Recovery
 
 # What rs274 prints after a bad command line (on stderr, exit 1).
 USAGE = """\
@@ -70,8 +72,9 @@ Options (rs274's own; options may also follow the file names):
     -v FILE   the parameter file: read at the start, written back at the start and at the end
     -i FILE   the INI file: its [RS274NGC] settings (SUBROUTINE_PATH, DISABLE_FANUC_STYLE_SUB,
               ...) and the #<_ini[SECTION]NAME> parameters
-    -n 0|1|2  what to do after an error: 0 continue, 1 enter MDI mode, 2 stop (the default);
-              accepted, but ngc always stops at the first error
+    -n 0|1|2  what to do after an error: 0 continue with the next line, 1 run MDI commands
+              from standard input until 'quit', then ask whether to continue, 2 stop (the
+              default)
     -b        toggle the block delete switch (default: off): lines starting with / are skipped
     -s        toggle printing the interpreter's call stack after an error: accepted, no effect
     -g        toggle batch mode (rs274 asks what to do without it): ngc always runs in batch mode
@@ -181,24 +184,25 @@ def _getopt_message(err: getopt.GetoptError) -> str:
 
 
 def run(argv: list[str], stdout: TextIO | None = None, stderr: TextIO | None = None, *,
-        fast: bool = True) -> int:
+        fast: bool = True, stdin: TextIO | None = None) -> int:
     """Run like ``rs274 argv...``; returns the exit code.
 
     Without streams, writes to the process's stdout and stderr byte for byte (latin-1), as the
     program text is read.  ``fast=False`` runs every line on the interpreter's general path.
+    ``stdin`` (default: the process's, as latin-1) is where ``-n 1`` reads MDI lines.
     """
     if stdout is None or stderr is None:
         out = stdout or _byte_stream(sys.stdout)
         err = stderr or _byte_stream(sys.stderr)
         try:
-            return _run(argv, out, err, fast)
+            return _run(argv, out, err, fast, stdin)
         finally:
             for stream, given in ((out, stdout), (err, stderr)):
                 if given is None:
                     stream.flush()
                     if isinstance(stream, io.TextIOWrapper):
                         stream.detach()
-    return _run(argv, stdout, stderr, fast)
+    return _run(argv, stdout, stderr, fast, stdin)
 
 
 def _byte_stream(stream: TextIO) -> TextIO:
@@ -229,7 +233,8 @@ def _open_program(path: str) -> ProgramReader:
         return ProgramReader(io.BytesIO())
 
 
-def _run(argv: list[str], out: TextIO, err: TextIO, fast: bool = True) -> int:
+def _run(argv: list[str], out: TextIO, err: TextIO, fast: bool = True,
+         stdin: TextIO | None = None) -> int:
     try:
         o = parse_args(argv)
     except ValueError as exc:
@@ -251,14 +256,14 @@ def _run(argv: list[str], out: TextIO, err: TextIO, fast: bool = True) -> int:
             return 1
     try:
         sink = TextSink(out, None) if transcript is None else TextSink(transcript, out)
-        return _interpret(o, sink, err, fast, terminal_output=is_terminal(out))
+        return _interpret(o, sink, err, fast, terminal_output=is_terminal(out), stdin=stdin)
     finally:
         if transcript is not None:
             transcript.close()
 
 
 def _interpret(o: Rs274Options, sink: TextSink, err: TextIO, fast: bool,
-               terminal_output: bool) -> int:
+               terminal_output: bool, stdin: TextIO | None = None) -> int:
     """From the INI file to the final ON_RESET, in rs274's order."""
     settings, ini = _settings(o, err)
     tools = DEFAULT_TABLE
@@ -288,7 +293,8 @@ def _interpret(o: Rs274Options, sink: TextSink, err: TextIO, fast: bool,
         return 1
     with handle, Progress(err, name, descriptor(handle),
                           active=is_terminal(err) and not terminal_output) as progress:
-        failed = _execute(interp, progress.lines(handle), handle, name, sink, err)
+        failed = _execute(interp, progress.lines(handle), handle, name, sink, err, o.on_error,
+                          stdin)
     if failed is None:
         return 1
     interp.label = "N..... "
@@ -302,9 +308,13 @@ def _interpret(o: Rs274Options, sink: TextSink, err: TextIO, fast: bool,
 
 
 def _execute(interp: Interpreter, lines: Iterable[str], reader: ProgramReader, name: str,
-             sink: TextSink, err: TextIO) -> bool | None:
+             sink: TextSink, err: TextIO, on_error: int = 2,
+             stdin: TextIO | None = None) -> bool | None:
     """Run the program: ``False`` if it ran to its end, ``True`` after an error, ``None`` if
     there was nothing to run (rs274 then reports and exits without resetting)."""
+    recovery = None
+    if on_error != 2:
+        interp.recover = recovery = Recovery(interp, sink, err, on_error, stdin)
     try:
         interp.run(lines, file=name, on_open=lambda: interp.emit(ops.OnReset()), reader=reader)
     except NgcOpenError as exc:
@@ -313,7 +323,8 @@ def _execute(interp: Interpreter, lines: Iterable[str], reader: ProgramReader, n
         return None
     except NgcError as exc:
         sink.flush()
-        report(err, exc)
+        if recovery is None or recovery.reported is not exc:  # -n 1 declined: reported already
+            report(err, exc)
         return True
     return False
 

@@ -32,6 +32,7 @@ import math
 import random
 from collections.abc import Callable
 
+import continued
 import contour
 import probing
 import spindlesync
@@ -1617,6 +1618,17 @@ def gen_failing(seed: int) -> str:
     return text_of("\n".join(lines).split("\n"))
 
 
+def mutate_keeping_end(rng: random.Random, lines: list[str]) -> None:
+    """One of the ``failing`` kind's mutations, other than losing the program's end."""
+    g = Gen(rng.randrange(1 << 30), "failing")
+    fns = [(w, f) for w, f in MUTATIONS if f is not mu_no_end]
+    rng.choices([f for _, f in fns], [w for w, _ in fns])[0](g, lines)
+
+
+def gen_continue(seed: int) -> str:
+    return continued.gen_continue(seed, KINDS, mutate_keeping_end)
+
+
 def text_of(lines: list[str]) -> str:
     return "".join(line + "\n" for line in lines)
 
@@ -1634,6 +1646,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "splines": gen_splines,
     "probe": gen_probe,
     "state": state.gen_state,
+    "continue": gen_continue,
 }
 
 

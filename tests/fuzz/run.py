@@ -44,6 +44,7 @@ for _p in (str(REPO / "src"), str(TESTS), str(TESTS / "golden"), str(HERE)):
     if _p not in sys.path:
         sys.path.insert(0, _p)
 
+import continued  # noqa: E402
 import gen  # noqa: E402
 from regen import child_env  # noqa: E402
 
@@ -103,7 +104,7 @@ def arguments(text: str) -> list[str]:
     """The command line after the program name: ``-t table.tbl`` if the program carries a tool
     table, then ``-g prog.ngc``."""
     table = ["-t", gen.TABLE_NAME] if gen.table_of(text) is not None else []
-    return [*table, "-g", PROGRAM_NAME]
+    return [*continued.args_of(text), *table, "-g", PROGRAM_NAME]
 
 
 def outcome(stdout: str, stderr: str, rc: int) -> Outcome:

@@ -64,21 +64,21 @@ def _traverse(m: Machine, r: Words, code: int) -> None:
     machine = r.g.get(codes.G_NON_MODAL) == 530
     if machine and m.comp is not None:
         ccomp.machine_move(m)
-    m.state.motion = code
     motion.traverse(m, motion.end_point(m, r.w, machine))
+    m.state.motion = code  # once the move is made (see fastpath)
 
 
 def _feed(m: Machine, r: Words, code: int) -> None:
     machine = r.g.get(codes.G_NON_MODAL) == 530
     if machine and m.comp is not None:
         ccomp.machine_move(m)
-    m.state.motion = code
     motion.feed(m, r.w, motion.end_point(m, r.w, machine))
+    m.state.motion = code
 
 
 def _arc(m: Machine, r: Words, code: int) -> None:
-    m.state.motion = code
     motion.arc(m, r.w, motion.end_point(m, r.w, False), code)
+    m.state.motion = code
 
 
 def _units(m: Machine, r: Words, code: int) -> None:

@@ -219,7 +219,8 @@ class FastPath:
             modes.spindle_speed(m, w["s"])
         if code is None:
             return
-        st.motion = code
+        # rs274 takes the motion mode once the move is made: a move that fails leaves the old
+        # one (seen when the run goes on after the error, -n 0).
         compensation = m.comp
         pos = st.pos if compensation is None else compensation.prog
         if st.absolute:
@@ -229,6 +230,7 @@ class FastPath:
             end = motion.relative_end(pos, w)
         if code in self._arcs:
             motion.arc(m, w, end, code)
+            st.motion = code
             return
         if compensation is not None:
             if code == 0:
@@ -237,6 +239,7 @@ class FastPath:
                 comp.straight(m, ops.StraightFeed, end)
             else:
                 motion.feed(m, w, end)
+            st.motion = code
             return
         if code == 0:
             m.move(ops.StraightTraverse, end, m.label, m.line)
@@ -244,8 +247,10 @@ class FastPath:
             m.move(ops.StraightFeed, end, m.label, m.line)
         else:
             motion.feed(m, w, end)
+            st.motion = code
             return
         st.pos = end
+        st.motion = code
 
     # -- lines run many times -----------------------------------------------------------------
     def compile(self, raw: str, number: int, parse: Callable[[str, int], Block]) -> Plain | Block | Compiled:

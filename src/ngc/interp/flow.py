@@ -30,6 +30,7 @@ from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, NoReturn, Protocol
 
 from ..errors import (
+    NgcEndOfFile,
     NgcError,
     NgcProgramError,
     NgcRuntimeError,
@@ -284,6 +285,8 @@ class Flow:
         # next do loop's closing while does not loop back (rs274 2.9.0~pre1 does so).
         self.broken_while = False
         self.resumed: tuple[Frame, int, Body, int] | None = None
+        # The line a skip failed at (see ``skip``), until a run going on after it reads past it.
+        self.failed_at: int | None = None
         # Where the skip from an o-word (constant label) to a keyword ends, once found.
         self.jumps: dict[tuple[Body, int, str], Mark] = {}
         # The lines of each constant label that skips have passed, ascending, per body.
@@ -376,7 +379,7 @@ class Flow:
             source = resumed[2].source(resumed[3])
         message = ("File ended with no percent sign" if self.interp.percent and len(self.frames) == 1
                    else "File ended with no percent sign or program end")
-        raise NgcProgramError(message, file=f.body.file, line=last, source=source)
+        raise NgcEndOfFile(message, file=f.body.file, line=last, source=source)
 
     # -- o-words ----------------------------------------------------------------------------
     def oword(self, f: Frame, block: Block) -> None:
@@ -430,7 +433,18 @@ class Flow:
 
     def skip(self, f: Frame, start: int, label: str, kinds: tuple[str, ...], mode: int,
              seeking: Block | None = None) -> Mark:
-        """Pass over the lines after ``start`` to the o-word ``label`` with one of ``kinds``."""
+        """Pass over the lines after ``start`` to the o-word ``label`` with one of ``kinds``.
+
+        A skip that fails (not a search) leaves its place in ``failed_at``: a run that goes on
+        after the error reads on from there (:mod:`.unwind`)."""
+        try:
+            return self._skip(f, start, label, kinds, mode, seeking)
+        except NgcError as err:
+            self.failed_at = err.line if mode != SEEK else None
+            raise
+
+    def _skip(self, f: Frame, start: int, label: str, kinds: tuple[str, ...], mode: int,
+              seeking: Block | None = None) -> Mark:
         it = self.interp
         body = f.body
         breaks: list[str] = []
@@ -760,6 +774,8 @@ class Flow:
         it = self.interp
         if f.sub is None:
             if self.resumed is None:  # no call has returned yet
+                # rs274 sets #<_value> first (seen when the run goes on after the error, -n 0)
+                self._set_value(ow)
                 raise NgcSemanticError(_quote(block, "not in a subroutine definition"))
             # rs274, once a call has returned: ``return`` in the main program sets #<_value>
             # and goes on; ``endsub`` is refused.

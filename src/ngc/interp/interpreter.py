@@ -12,7 +12,7 @@ from collections.abc import Callable, Iterable, Iterator
 from typing import TYPE_CHECKING, TextIO
 
 from ..canon import ops
-from ..errors import NgcError, NgcOpenError, NgcProgramError, NgcSemanticError, NgcSyntaxError
+from ..errors import NgcEndOfFile, NgcError, NgcOpenError, NgcSemanticError, NgcSyntaxError
 from ..language import codes
 from ..language.codes import LINUXCNC, CodeTable
 from ..language.lexer import C_SPACE
@@ -29,6 +29,7 @@ from .resolve import Resolved, resolve
 from .snapshot import Context
 from .source import ProgramReader
 from .state import State
+from .unwind import unwind
 
 if TYPE_CHECKING:
     from ..canon.ops import Op, Sink
@@ -88,6 +89,8 @@ class Interpreter:
         self.flow.max_call_depth = max_call_depth
         self.numbered: Iterator[tuple[int, str]] = iter(())
         self.reader: ProgramReader | None = None
+        # Told of each error; True: the run goes on with the next line (rs274's -n 0 and -n 1).
+        self.recover: Callable[[NgcError], bool] | None = None
 
     # The machine's running block and program files, as attributes of the interpreter too.
     @property
@@ -225,38 +228,65 @@ class Interpreter:
         self.percent = percent = raw.strip() == "%"
         flow = self.flow
         if not percent:
-            self._execute_raw(raw, number)
+            try:
+                self._execute_raw(raw, number)
+            except NgcError as err:
+                if not self._recovered(err):
+                    raise
             if self.ended or flow.tape is not None:
                 self._finish_run()
                 return
         line = self.fast.line if self.fast is not None else None
         m = self.machine
-        try:
-            for number, raw in numbered:
-                raw = raw.rstrip("\n")
-                if "\x00" in raw or len(raw) > MAX_LINE:
-                    raw = self._checked(raw, number, opening=False)
-                if percent and raw.strip() == "%":
-                    self._finish_percent()
-                    return
-                if line is None or not line(raw, number):
-                    self.execute_line(raw, number)
-                if m.ended or flow.tape is not None:
-                    break
-            else:
-                message = "File ended with no percent sign" if percent else (
-                    "File ended with no percent sign or program end"
-                )
-                raise NgcProgramError(message, file=file, line=number, source=raw.rstrip(C_SPACE))
-        except NgcError as err:
-            # The fast path's errors know neither their line nor their file; the others do.
-            raise err.locate(file=file, line=number, source=raw.rstrip(C_SPACE)) from None
+        while True:
+            try:
+                for number, raw in numbered:
+                    raw = raw.rstrip("\n")
+                    if "\x00" in raw or len(raw) > MAX_LINE:
+                        raw = self._checked(raw, number, opening=False)
+                    if percent and raw.strip() == "%":
+                        self._finish_percent()
+                        return
+                    if line is None or not line(raw, number):
+                        self.execute_line(raw, number)
+                    if m.ended or flow.tape is not None:
+                        break
+                else:
+                    message = "File ended with no percent sign" if percent else (
+                        "File ended with no percent sign or program end"
+                    )
+                    raise NgcEndOfFile(message, file=file, line=number, source=raw.rstrip(C_SPACE))
+            except NgcError as err:
+                # The fast path's errors know neither their line nor their file; the others do.
+                err = err.locate(file=file, line=number, source=raw.rstrip(C_SPACE))
+                if self._recovered(err):
+                    if m.ended or flow.tape is not None:
+                        break
+                    continue  # on with the next line
+                raise err from None
+            break
         self._finish_run()
+
+    def _recovered(self, err: NgcError) -> bool:
+        """An error the run goes on after (``recover`` says so; rs274's ``-n 0``): the calls
+        under way are left, the subroutines and labels forgotten (:mod:`.unwind`)."""
+        if self.recover is None or isinstance(err, NgcEndOfFile) or not self.recover(err):
+            return False
+        self.machine.held.clear()  # rs274 drops the moves cutter compensation holds back
+        if self.flow.tape is not None:
+            unwind(self.flow)
+        return True
 
     def _finish_run(self) -> None:
         """The program ended, or control flow took it over: it runs the rest, to the end."""
-        if not self.ended:
-            self.flow.run()
+        while not self.ended:
+            try:
+                self.flow.run()
+            except NgcError as err:
+                if not self._recovered(err):
+                    raise
+            else:
+                break
         self._after_end()
 
     def _after_end(self) -> None:
