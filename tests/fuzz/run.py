@@ -349,8 +349,10 @@ def show_diff(ref: Outcome, ours: Outcome) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--kinds", default=",".join(gen.KINDS),
-                    help=f"comma-separated kinds (default: {','.join(gen.KINDS)})")
+    # `continue` (-n 0) has known differences and programs rs274 never finishes: asked for by name.
+    default_kinds = ",".join(kind for kind in gen.KINDS if kind != "continue")
+    ap.add_argument("--kinds", default=default_kinds,
+                    help=f"comma-separated kinds (default: {default_kinds})")
     ap.add_argument("--count", type=int, default=20, help="programs per kind (default 20)")
     ap.add_argument("--seed", type=int, default=1, help="first seed (default 1)")
     ap.add_argument("--jobs", "-j", type=int, default=2, help="worker processes (default 2)")
