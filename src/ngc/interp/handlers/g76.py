@@ -33,13 +33,12 @@ from typing import TYPE_CHECKING
 from ...canon import ops
 from ...errors import NgcSemanticError
 from .. import comp
-from . import spindle
+from . import spindle, threading
 
 if TYPE_CHECKING:
     from ..machine import Machine
 
 G76 = 760
-_NOT_G0_G1 = "Bug code not g0 or g1"
 _ENTRY_TAPER = 1  # L bits
 _EXIT_TAPER = 2
 _DISABLE = ops.DisableFeedOverride()
@@ -188,12 +187,5 @@ def _compensated(it: Machine, end: list[float]) -> bool:
     if c.side == 0:
         comp.flush(it)
         return False
-    if c.first:
-        if math.hypot(end[c.a] - c.ca, end[c.b] - c.cb) <= c.radius:
-            raise NgcSemanticError(
-                "Length of cutter compensation entry move is not greater than the tool radius")
-        raise NgcSemanticError(_NOT_G0_G1)
-    if end[c.a] == c.prog[c.a] and end[c.b] == c.prog[c.b]:
-        raise NgcSemanticError(_NOT_G0_G1)
-    comp.straight(it, ops.StraightFeed, end, corner_refusal=_NOT_G0_G1)
+    threading.compensated_feed(it, end, corner_refusal=threading.NOT_G0_G1)
     return True

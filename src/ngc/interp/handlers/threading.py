@@ -32,7 +32,7 @@ G33 = 330
 G33_1 = 331
 SYNCHRONIZED = frozenset({G33, G33_1})
 _NAMES = {G33: "G33", G33_1: "G33.1"}
-_NOT_G0_G1 = "Bug code not g0 or g1"
+NOT_G0_G1 = "Bug code not g0 or g1"
 
 
 def check(w: dict[str, float]) -> None:
@@ -94,12 +94,21 @@ def _compensated(it: Machine, end: list[float]) -> bool:
             c.prog = end
             c.ca, c.cb = end[c.a], end[c.b]
         return False
+    compensated_feed(it, end)
+    return True
+
+
+def compensated_feed(it: Machine, end: list[float], corner_refusal: str = "") -> None:
+    """A spindle-synchronized move (G33, G33.1, G76) run as a compensated straight feed, with
+    rs274's refusals: as the entry move (after the entry's own length check) and out of the plane
+    ("Bug code not g0 or g1"); ``corner_refusal`` as in :func:`comp.straight`."""
+    c = it.comp
+    assert c is not None
     if c.first:
         if math.hypot(end[c.a] - c.ca, end[c.b] - c.cb) <= c.radius:
             raise NgcSemanticError(
                 "Length of cutter compensation entry move is not greater than the tool radius")
-        raise NgcSemanticError(_NOT_G0_G1)
+        raise NgcSemanticError(NOT_G0_G1)
     if end[c.a] == c.prog[c.a] and end[c.b] == c.prog[c.b]:
-        raise NgcSemanticError(_NOT_G0_G1)
-    comp.straight(it, ops.StraightFeed, end)
-    return True
+        raise NgcSemanticError(NOT_G0_G1)
+    comp.straight(it, ops.StraightFeed, end, corner_refusal=corner_refusal)
