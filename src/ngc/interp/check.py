@@ -156,13 +156,9 @@ def _check_other_words(r: Words, active: int | None, table: CodeTable) -> None:
             raise NgcSemanticError(message)
 
 
-P_TURNS_TOLERANCE = 0.001  # how far from a whole number an arc's P may be
-
-
 def _check_turns(p: float) -> None:
     """An arc's P: a whole number of turns (to within 0.001, as rs274 allows), at least 1."""
-    if abs(p - round(p)) > P_TURNS_TOLERANCE:
-        raise NgcSemanticError("P value not an integer with M19 G2 or G3")
+    spindle.check_whole_p(p)
     if round(p) < 1:
         raise NgcSemanticError("P value should be 1 or greater with G2 or G3")
 

@@ -32,7 +32,7 @@ if TYPE_CHECKING:
 SPINDLES = 1  # rs274's num_spindles on the standalone machine
 ALL = -1  # $-1: every spindle (S, M3, M4, M5)
 CSS_UNLIMITED = 1e30  # G96 without D: no maximum speed
-_P_INTEGER_TOLERANCE = 0.001  # M19 P: how far from a whole number rs274 lets it be
+_P_INTEGER_TOLERANCE = 0.001  # M19 and G2/G3 P: how far from a whole number rs274 lets it be
 _ORIENT_DIRECTIONS = (0, 1, 2)  # M19 P: shortest way, clockwise, counterclockwise
 _M_NAMES = MappingProxyType({3: "M3", 4: "M4", 5: "M5"})
 # M3 / M4 / M5: the state's direction (1 clockwise, -1 counterclockwise, 0 stopped), the call
@@ -87,12 +87,17 @@ def turn(it: Machine, w: dict[str, float], code: int) -> None:
         it.emit(call(k))
 
 
+def check_whole_p(p: float) -> None:
+    """M19's P, and an arc's P (its turns): a whole number to within 0.001, as rs274 allows."""
+    if abs(p - round(p)) > _P_INTEGER_TOLERANCE:
+        raise NgcSemanticError("P value not an integer with M19 G2 or G3")
+
+
 def check_orient(w: dict[str, float]) -> None:
     """M19's P and R, checked before its line runs."""
     p = w.get("p")
     if p is not None:
-        if abs(p - round(p)) > _P_INTEGER_TOLERANCE:
-            raise NgcSemanticError("P value not an integer with M19 G2 or G3")
+        check_whole_p(p)
         if int(p) not in _ORIENT_DIRECTIONS:
             raise NgcSemanticError("P value must be 0,1,or 2 with M19")
     r = w.get("r")
