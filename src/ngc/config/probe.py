@@ -39,7 +39,6 @@ The probe touches where a point is inside some shape without ``cut`` and inside 
 from __future__ import annotations
 
 import math
-import tomllib
 from collections.abc import Callable, Sequence
 from itertools import pairwise
 from typing import Any, Protocol
@@ -219,6 +218,8 @@ class Surfaces:
 # -- the file ---------------------------------------------------------------------------------
 def read_probe_file(path: str) -> Surfaces:
     """Read a probe file (module docstring); :class:`NgcConfigError` names what is wrong."""
+    import tomllib  # here, not at start-up: only a run with a probe file needs it
+
     try:
         with open(path, "rb") as handle:
             data = tomllib.load(handle)
