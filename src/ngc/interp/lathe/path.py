@@ -1,0 +1,52 @@
+"""The moves a lathe cycle makes, as canon in the XZ plane (program coordinates, X a radius)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ...canon import ops
+from .profile import CCW
+
+if TYPE_CHECKING:
+    from ..machine import Machine
+
+
+class Out:
+    """Emits a cycle's moves on a machine; Y and the rotary axes stay where they are."""
+
+    __slots__ = ("m",)
+
+    def __init__(self, m: Machine) -> None:
+        self.m = m
+
+    @property
+    def x(self) -> float:
+        return self.m.state.pos[0]
+
+    @property
+    def z(self) -> float:
+        return self.m.state.pos[2]
+
+    def _end(self, x: float, z: float) -> list[float]:
+        pos = self.m.state.pos
+        return [x, pos[1], z, pos[3], pos[4], pos[5]]
+
+    def traverse(self, x: float, z: float) -> None:
+        m = self.m
+        end = self._end(x, z)
+        m.move(ops.StraightTraverse, end, m.label, m.line)
+        m.state.pos = end
+
+    def feed(self, x: float, z: float) -> None:
+        m = self.m
+        end = self._end(x, z)
+        m.move(ops.StraightFeed, end, m.label, m.line)
+        m.state.pos = end
+
+    def arc(self, x: float, z: float, cx: float, cz: float, kind: int) -> None:
+        """G2 (kind CW) or G3 (CCW) to (x, z) around (cx, cz) in the XZ plane."""
+        m = self.m
+        end = self._end(x, z)
+        m.move(ops.ArcFeed, (z, x, cz, cx, 1 if kind == CCW else -1, end[1], end[3], end[4],
+                             end[5]), m.label, m.line)
+        m.state.pos = end
