@@ -25,6 +25,7 @@ from .handlers import (
     cycles,
     g76,
     io,
+    lathe,
     modes,
     motion,
     probe,
@@ -154,6 +155,7 @@ _HANDLERS: dict[str, Handler] = {
     "nurbs_end": splines.nurbs_end,
     "probe": probe.straight_probe,
     "threading_cycle": lambda m, r, code: g76.run(m, r.w, motion.end_point(m, r.w, False)),
+    "lathe_cycle": lathe.cycle,
     **{name: cycles.handler(name) for name in cycles.CYCLES},
     "stop": lambda m, r, code: program.stop(m, code),
     "modal_state": lambda m, r, code: context.m_code(m, code),
@@ -223,9 +225,12 @@ class Dispatcher:
 
     def convert(self, m: Machine, r: Words) -> None:
         """Run a checked block's steps in the order of execution."""
-        lathe = r.g.get(codes.G_LATHE)
-        if "x" in r.w and (m.state.lathe_diameter if lathe is None else lathe == 70):
+        mode = r.g.get(codes.G_LATHE)
+        if "x" in r.w and (m.state.lathe_diameter if mode is None else mode == 70):
             r = _diameter_x(r)
+        if m.profile is not None:
+            lathe.record(m, r)  # a line of a lathe cycle's profile: only its move counts
+            return
         self.run(m, r, self.plan(m, r))
 
     @staticmethod

@@ -360,6 +360,29 @@ class Flow:
             if m.ended:
                 return
 
+    def run_profile(self, call: Block, parse: Callable[[str, int], Block]) -> None:
+        """Run the call ``call`` until it returns, each line read afresh with ``parse`` and run on
+        the general path (a lathe cycle's profile: see handlers/lathe.py)."""
+        frames = self.frames
+        depth = len(frames)
+        self.oword(frames[-1], call)
+        execute = self.interp.execute
+        while len(frames) > depth:
+            f = frames[-1]
+            number = f.pc
+            if f.body.fetch(number) is None:
+                self.end_of_file(f)
+            f.pc = number + 1
+            source = f.body.source(number)
+            try:
+                block = parse(source, number)
+            except NgcError as err:
+                raise err.locate(file=f.body.file, line=number, source=source) from None
+            if block.oword is None:
+                execute(block)
+            elif not (block.delete and self.interp.machine.state.blocks_deleted):
+                self.oword(f, block)
+
     def compile(self, body: Body, number: int, raw: str) -> Plain | Block | Compiled:
         """Read a line once; the compiled entry replaces the raw text in its body."""
         try:

@@ -72,6 +72,7 @@ class Interpreter:
         self.machine = m = Machine(sink, write_files)
         m.probe = probe
         m.run_text = self._run_text
+        m.run_profile = self._run_profile
         self.sink = sink
         self.state: State = m.state
         self.state.blocks_deleted = block_delete
@@ -389,6 +390,30 @@ class Interpreter:
     def _run_text(self, text: str) -> None:
         """A line a handler has the interpreter run (an M72 restore), at the running line."""
         self.execute(self.parse(text, self.machine.line))
+
+    def _run_profile(self, q: float) -> None:
+        """A lathe cycle's ``o<q> call``, every line of it read and run as a profile line (see
+        handlers/lathe.py): rs274 runs the line ``O<q> CALL`` (a Q that is not a whole number
+        fails as that line)."""
+        m = self.machine
+        text = f"O{q:f} CALL"
+        try:
+            block = parse_line(text, m.line, self.table, False)
+        except NgcError as err:
+            raise err.locate(file=self.file, line=m.line, source=text) from None
+        flow = self.flow
+        if flow.tape is None:  # the first o-word line of the program: control flow starts here
+            flow.enter(block, self.numbered, self.reader)
+            flow.frames[-1].pc = m.line + 1
+        fast, self.fast = self.fast, None
+        try:
+            flow.run_profile(block, self.parse_profile)
+        finally:
+            self.fast = fast
+
+    def parse_profile(self, raw: str, number: int) -> Block:
+        """A line of a lathe cycle's profile (U and W are words there)."""
+        return parse_line(raw, number, self.table, False, profile=True)
 
     def _run_plain(self, w: dict[str, float], code: int | None) -> None:
         """A compiled plain line (see :meth:`FastPath.convert`)."""

@@ -28,7 +28,8 @@ class Machine:
     """State, parameters, the sink, and the files a program opens (logs)."""
 
     __slots__ = ("comp", "contexts", "encoding", "ended", "held", "label", "line", "log", "move",
-                 "params", "probe", "probe_log", "run_text", "sink", "state", "write_files")
+                 "params", "probe", "probe_log", "profile", "run_profile", "run_text", "sink",
+                 "state", "write_files")
 
     def __init__(self, sink: Sink, write_files: bool = True) -> None:
         self.sink = sink
@@ -60,6 +61,11 @@ class Machine:
         # first; and how a restore runs a line of G code (the interpreter sets it).
         self.contexts = [Context()]
         self.run_text: Callable[[str], None] | None = None
+        # A lathe cycle's profile while its subroutine runs (handlers/lathe.py): the moves are
+        # recorded here, nothing else of the subroutine's lines runs; None otherwise.  How the
+        # cycle runs its subroutine ``o<q> call`` (the interpreter sets it).
+        self.profile: list[Any] | None = None
+        self.run_profile: Callable[[float], None] | None = None
 
     @property
     def tools(self) -> Tools:

@@ -191,13 +191,13 @@ _G: dict[int, Code] = {
     740: _cycle("tap_left", "rp"),  # no L: rs274 refuses it with G74
     760: Code(G_MOTION, STEP_MOTION, "threading_cycle", "ijklpqrhe$", requires=_AXES,  # G76
               missing="All axes missing with motion code"),
-    700: _no(G_MOTION, STEP_MOTION, "qdep"),  # G70 lathe finishing cycle
-    710: _no(G_MOTION, STEP_MOTION, "qdir"),  # G71, G71.1, G71.2 lathe roughing cycles
-    711: _no(G_MOTION, STEP_MOTION, "qdir"),
-    712: _no(G_MOTION, STEP_MOTION, "qdir"),
-    720: _no(G_MOTION, STEP_MOTION, "qdir"),  # G72, G72.1, G72.2 lathe facing cycles
-    721: _no(G_MOTION, STEP_MOTION, "qdir"),
-    722: _no(G_MOTION, STEP_MOTION, "qdir"),
+    700: _motion("lathe_cycle", "qdep"),  # G70 lathe finishing cycle
+    710: _motion("lathe_cycle", "qdir"),  # G71, G71.1, G71.2 lathe roughing cycles
+    711: _motion("lathe_cycle", "qdir"),
+    712: _motion("lathe_cycle", "qdir"),
+    720: _motion("lathe_cycle", "qdir"),  # G72, G72.1, G72.2 lathe facing cycles
+    721: _motion("lathe_cycle", "qdir"),
+    722: _motion("lathe_cycle", "qdir"),
     800: _motion("cancel_motion"),
     810: _cycle("drill", "rl"),
     820: _cycle("drill_dwell", "rlp"),

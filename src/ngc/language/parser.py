@@ -33,6 +33,7 @@ COMMENT = 2
 Item = tuple[int, object, object]
 
 _LETTERS = "abcdefghijklmpqrstxyz$"
+_PROFILE_LETTERS = _LETTERS + "uw"  # a lathe cycle's profile: U, W are incremental X, Z
 # How rs274 names a repeated word that is not named by its letter.
 _WORD_NAMES = MappingProxyType({"$": "spindle choice ($)"})
 _LOWER = "abcdefghijklmnopqrstuvwxyz"
@@ -92,7 +93,7 @@ class Block:
 
 
 def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool = True,
-               eager: ex.ParamContext | None = None) -> Block:
+               eager: ex.ParamContext | None = None, profile: bool = False) -> Block:
     """Parse one source line (without its newline) into a :class:`Block`.
 
     ``table`` is the dialect's code table (unknown codes and modal clashes are read errors);
@@ -102,6 +103,9 @@ def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool 
     is read: an error in a value (``X[1/0]``) comes before a read error further on (``G0 G1``).
     The interpreter reads a line so only when the line has a read error, to know which comes
     first; the block it returns is of no other use.
+
+    ``profile`` reads a line of a lathe cycle's profile subroutine, where U and W are words too
+    (elsewhere rs274 says "Bad character 'u' used").
 
     >>> b = parse_line("N10 G1 X1.5 Y[2*3] (cut)")
     >>> b.label, [(k, key) for k, key, _ in b.items]
@@ -117,6 +121,8 @@ def parse_line(raw: str, line: int = 0, table: CodeTable = LINUXCNC, fast: bool 
         if not (fast and _fast(block, text, table)):
             reader = _Reader(text, block, table) if eager is None else _EagerReader(
                 text, block, table, eager)
+            if profile:
+                reader.letters = _PROFILE_LETTERS
             reader.read_line()
             _resolve_constant(block, reader.read)
     except NgcError as err:
@@ -252,11 +258,12 @@ def raw_column(raw: str, index: int) -> int:
 class _Reader:
     """Reads the items of a normalized line, rs274's way (the general path)."""
 
-    __slots__ = ("block", "i", "read", "s", "table")
+    __slots__ = ("block", "i", "letters", "read", "s", "table")
 
     def __init__(self, text: str, block: Block, table: CodeTable = LINUXCNC) -> None:
         self.s = text
         self.i = 0
+        self.letters = _LETTERS
         self.block = block
         self.table = table
         # The constant words read so far: rs274 raises a word's errors (a repeated letter, two
@@ -273,6 +280,7 @@ class _Reader:
             self.read_line_number()
         items = self.block.items
         seen: set[str] = set()
+        letters = self.letters
         n = len(s)
         while self.i < n:
             c = s[self.i]
@@ -282,7 +290,7 @@ class _Reader:
                 self.i = end + 1
             elif c == "#":
                 items.append(self.read_parameter_setting())
-            elif c in _LETTERS or c in POLAR_LETTERS:
+            elif c in letters or c in POLAR_LETTERS:
                 if c in seen:
                     raise self.error(f"Multiple {_WORD_NAMES.get(c, c)} words on one line")
                 if c not in "gm":

@@ -199,6 +199,17 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
     st.pos = end
 
 
+def arc_center(it: Machine, w: dict[str, float], code: int, start: list[float],
+               end: list[float]) -> tuple[float, float]:
+    """The centre of an arc (G2 ``code`` 20, G3 30) from ``start`` to ``end`` in the active plane,
+    on the plane's first and second axes (Z and X in G18), with the checks and errors of ``arc``."""
+    first, second, _, letters, _, _, labels = PLANES[it.state.plane]
+    s1, s2, e1, e2 = start[first], start[second], end[first], end[second]
+    if "r" in w:
+        return _radius_center(it, code, w["r"], s1, s2, e1, e2)
+    return _ijk_center(it, w, letters, s1, s2, e1, e2, labels)
+
+
 def _ijk_center(
     it: Machine, w: dict[str, float], letters: str,
     s1: float, s2: float, e1: float, e2: float, labels: str,

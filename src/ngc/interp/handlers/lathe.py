@@ -1,0 +1,109 @@
+"""The lathe cycles G70, G71/G71.1/G71.2, G72/G72.1/G72.2: their checks, the recording of the
+profile subroutine, and the cycle (``interp/lathe``).
+
+rs274 runs the subroutine Q as the line ``O<q> CALL``: its control flow and parameter settings
+run (global parameters are given back their values afterwards), its G0/G1/G2/G3 moves (or the
+modal motion of a line with axis words) become the profile, in the distance modes of the cycle's
+line, U and W adding to X and Z, an A or C word asking for a fillet or chamfer at the move's end;
+nothing else of its lines runs.  The modal motion the last move leaves stays.  An error of the
+cycle itself is shown at the subroutine's last line.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ...errors import NgcError, NgcSemanticError
+from ...language import codes
+from ..lathe.path import Out
+from ..lathe.profile import CCW, CW, LINE, Seg
+from ..lathe.roughing import rough
+from . import motion
+
+if TYPE_CHECKING:
+    from ...language.words import Words
+    from ..machine import Machine
+
+_KINDS = {20: CW, 30: CCW}
+
+
+def _name(code: int) -> str:
+    return f"G{code // 10}.{code % 10}"
+
+
+def record(m: Machine, r: Words) -> None:
+    """A line of the profile subroutine: its move, if it has one, added to ``m.profile``."""
+    st = m.state
+    w = r.w
+    code = r.g.get(codes.G_MOTION)
+    if code is None:
+        if not ("x" in w or "z" in w or "u" in w or "w" in w or "y" in w):
+            return
+        code = st.motion
+    pos = st.pos
+    x0, z0 = pos[0], pos[2]
+    u = w.get("u", 0.0)
+    if st.lathe_diameter:
+        u /= 2.0
+    if st.absolute:
+        x1 = w.get("x", x0) + u
+        z1 = w.get("z", z0) + w.get("w", 0.0)
+    else:
+        x1 = x0 + w.get("x", 0.0) + u
+        z1 = z0 + w.get("w", 0.0) + w.get("z", 0.0)
+    end = [x1, pos[1], z1, pos[3], pos[4], pos[5]]
+    kind = _KINDS.get(code, LINE)
+    cx = cz = 0.0
+    if kind != LINE:
+        cz, cx = motion.arc_center(m, w, code, pos, end)
+    assert m.profile is not None
+    m.profile.append(Seg(kind, x0, z0, x1, z1, cx, cz, w.get("a", 0.0), w.get("c", 0.0),
+                         m.line))
+    st.pos = end
+    st.motion = code
+
+
+def cycle(m: Machine, r: Words, code: int) -> None:
+    """G70-G72: checks, the preliminary traverse, the profile, the cycle."""
+    w = r.w
+    st = m.state
+    if "q" not in w:
+        raise NgcSemanticError("G7x.x  requires a Q word")
+    if st.plane != 180:
+        raise NgcSemanticError(f"{_name(code)} can only be used in XZ plane (G18)")
+    target = motion.end_point(m, w, False)
+    start = (target[0], target[2])
+    out = Out(m)
+    out.traverse(*start)
+    if code == 700:
+        raise NgcSemanticError("G70 is not supported yet")
+    st.motion = code  # a line of the subroutine with axis words alone runs this motion
+    profile = _record(m, w["q"])
+    where = (m.label, m.line)
+    try:
+        rough(out, profile, start, code, w.get("d", 0.0), w.get("i", 1.0), w.get("r", 0.5))
+    except NgcError:
+        m.label, m.line = where
+        raise
+
+
+def _record(m: Machine, q: float) -> list[Seg]:
+    """Run the subroutine ``q`` as a profile; the machine's position and parameters are as
+    before, the modal motion as its last move left it."""
+    st = m.state
+    params = m.params
+    pos = list(st.pos)
+    numbered = list(params.numbered)
+    named = dict(params.globals)
+    m.profile = []
+    assert m.run_profile is not None
+    try:
+        m.run_profile(q)
+        profile: list[Seg] = m.profile
+    finally:
+        m.profile = None
+        st.pos = pos
+        params.numbered[:] = numbered
+        params.globals.clear()
+        params.globals.update(named)
+    return profile

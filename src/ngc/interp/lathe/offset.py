@@ -1,0 +1,131 @@
+"""A profile moved a distance toward the side being cut: the material G71/G72 leave for finishing.
+
+Each segment moves along its normal toward that side (arcs change radius about the same centre);
+where two moved segments leave a gap (an outside corner) an arc of the distance about the corner
+joins them; where they cross (an inside corner) both are cut back to the crossing.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .profile import CCW, CW, LINE, Seg
+
+EPS = 1e-9
+
+
+def _shift(seg: Seg, side: float, d: float) -> Seg:
+    """``seg`` moved ``d`` to its left (``side`` +1) or right (-1), in the (z, x) plane."""
+    if seg.kind == LINE:
+        dx, dz = seg.x1 - seg.x0, seg.z1 - seg.z0
+        n = math.hypot(dx, dz)
+        if n == 0.0:
+            return seg
+        # left of the direction (dz, dx) in (z, x) coordinates is (-dx, dz)
+        oz, ox = -dx / n * side * d, dz / n * side * d
+        return seg._replace(x0=seg.x0 + ox, z0=seg.z0 + oz, x1=seg.x1 + ox, z1=seg.z1 + oz)
+    r = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
+    # G3 (CCW in (z, x)) has its centre on the left
+    toward_centre = side if seg.kind == CCW else -side
+    r2 = r - toward_centre * d
+    k0 = r2 / r
+    r_end = math.hypot(seg.x1 - seg.cx, seg.z1 - seg.cz)
+    k1 = r2 / r_end
+    return seg._replace(x0=seg.cx + (seg.x0 - seg.cx) * k0, z0=seg.cz + (seg.z0 - seg.cz) * k0,
+                        x1=seg.cx + (seg.x1 - seg.cx) * k1, z1=seg.cz + (seg.z1 - seg.cz) * k1)
+
+
+def tangent(seg: Seg, at_end: bool) -> tuple[float, float]:
+    """The unit direction (dz, dx) of ``seg`` at its start or end."""
+    if seg.kind == LINE:
+        dz, dx = seg.z1 - seg.z0, seg.x1 - seg.x0
+    else:
+        pz, px = (seg.z1, seg.x1) if at_end else (seg.z0, seg.x0)
+        rz, rx = pz - seg.cz, px - seg.cx
+        # CCW in (z, x): direction is the radius turned left
+        dz, dx = (-rx, rz) if seg.kind == CCW else (rx, -rz)
+    n = math.hypot(dz, dx)
+    return (dz / n, dx / n) if n else (0.0, 0.0)
+
+
+def intersections(a: Seg, b: Seg) -> list[tuple[float, float]]:
+    """Where the carriers of two segments cross (lines as infinite lines, arcs as circles),
+    as (x, z) points."""
+    if a.kind == LINE and b.kind == LINE:
+        d1z, d1x = a.z1 - a.z0, a.x1 - a.x0
+        d2z, d2x = b.z1 - b.z0, b.x1 - b.x0
+        den = d1z * d2x - d1x * d2z
+        if abs(den) < EPS:
+            return []
+        t = ((b.z0 - a.z0) * d2x - (b.x0 - a.x0) * d2z) / den
+        return [(a.x0 + t * d1x, a.z0 + t * d1z)]
+    if a.kind == LINE or b.kind == LINE:
+        line, arc = (a, b) if a.kind == LINE else (b, a)
+        return line_circle(line.x0, line.z0, line.x1, line.z1, arc.cx, arc.cz,
+                           math.hypot(arc.x0 - arc.cx, arc.z0 - arc.cz))
+    return circle_circle(a, b)
+
+
+def line_circle(x0: float, z0: float, x1: float, z1: float, cx: float, cz: float,
+                r: float) -> list[tuple[float, float]]:
+    dx, dz = x1 - x0, z1 - z0
+    fx, fz = x0 - cx, z0 - cz
+    a = dx * dx + dz * dz
+    if a == 0.0:
+        return []
+    b = 2 * (fx * dx + fz * dz)
+    c = fx * fx + fz * fz - r * r
+    disc = b * b - 4 * a * c
+    if disc < 0:
+        if disc > -EPS * max(1.0, b * b):
+            disc = 0.0
+        else:
+            return []
+    sq = math.sqrt(disc)
+    return [(x0 + t * dx, z0 + t * dz) for t in ((-b - sq) / (2 * a), (-b + sq) / (2 * a))]
+
+
+def circle_circle(a: Seg, b: Seg) -> list[tuple[float, float]]:
+    r1 = math.hypot(a.x0 - a.cx, a.z0 - a.cz)
+    r2 = math.hypot(b.x0 - b.cx, b.z0 - b.cz)
+    dx, dz = b.cx - a.cx, b.cz - a.cz
+    d = math.hypot(dx, dz)
+    if d == 0.0 or d > r1 + r2 + EPS or d < abs(r1 - r2) - EPS:
+        return []
+    along = (d * d + r1 * r1 - r2 * r2) / (2 * d)
+    h = math.sqrt(max(r1 * r1 - along * along, 0.0))
+    mx, mz = a.cx + along * dx / d, a.cz + along * dz / d
+    return [(mx - h * dz / d, mz + h * dx / d), (mx + h * dz / d, mz - h * dx / d)]
+
+
+def offset(profile: list[Seg], side: float, d: float) -> list[Seg]:
+    """``profile`` moved ``d`` to its left (``side`` +1) or right (-1), corners joined."""
+    if d == 0.0 or not profile:
+        return list(profile)
+    moved = [_shift(seg, side, d) for seg in profile]
+    out: list[Seg] = []
+    for i, seg in enumerate(moved):
+        if not out:
+            out.append(seg)
+            continue
+        prev = out[-1]
+        if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
+            out.append(seg)
+            continue
+        t1 = tangent(profile[i - 1], True)
+        t2 = tangent(profile[i], False)
+        turn = t1[0] * t2[1] - t1[1] * t2[0]  # > 0: turning left
+        if turn * side < 0:  # turning away from the moved side: an outside corner
+            corner = profile[i]
+            out.append(Seg(CCW if side < 0 else CW, prev.x1, prev.z1, seg.x0, seg.z0,
+                           corner.x0, corner.z0, line=corner.line))
+            out.append(seg)
+            continue
+        points = intersections(prev, seg)
+        if not points:
+            out.append(seg)
+            continue
+        px, pz = min(points, key=lambda p: math.hypot(p[0] - prev.x1, p[1] - prev.z1))
+        out[-1] = prev._replace(x1=px, z1=pz)
+        out.append(seg._replace(x0=px, z0=pz))
+    return out

@@ -1,0 +1,174 @@
+"""G71 (turning) and G72 (facing) roughing, with their .1 (no pockets) and .2 (pockets only)
+variants, as rs274 2.9.0~pre1 cuts them.
+
+The cycle works in a frame of two axes: ``a``, the axis the passes step along (X for G71, Z for
+G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
+
+* The profile's first move, from the start point, is the approach; the rest is moved ``D`` toward
+  the start (``offset``).  ``P0`` is the moved profile's first point, ``E`` its last.
+* The passes step from the start toward ``P0``: away from ``E`` on ``a`` (G71: toward larger X when
+  E is below P0, else smaller; G72 the same on Z, a tie counting the other way).  If the profile
+  lies nowhere beyond the start that way there is nothing to rough: the tool feeds along the
+  profile as programmed, approach included.
+* Each level ``start + k*I`` before P0: a traverse to where the level meets the approach, a feed
+  along ``b`` to the first point where it meets the profile (or the closing line from E back to
+  the start's level), a traverse back R on both axes, a traverse to R past the entry, and a
+  traverse to the entry.
+* Then a traverse to P0 and a feed along the moved profile; where it goes deeper, at each level it
+  reaches (from its start, not at its end) it feeds across the pocket to the profile's far side
+  and back.  A last feed closes back to the start's level at E.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .offset import EPS, line_circle, offset
+from .path import Out
+from .profile import CCW, CW, LINE, Seg
+
+
+class _Frame:
+    """Maps (x, z) to the cycle's (a, b) and back; G72 swaps the axes."""
+
+    __slots__ = ("swap",)
+
+    def __init__(self, swap: bool) -> None:
+        self.swap = swap
+
+    def ab(self, x: float, z: float) -> tuple[float, float]:
+        return (z, x) if self.swap else (x, z)
+
+    def xz(self, a: float, b: float) -> tuple[float, float]:
+        return (b, a) if self.swap else (a, b)
+
+
+def _level_hits(seg: Seg, fr: _Frame, level: float) -> list[float]:
+    """The ``b`` coordinates where ``seg`` meets the line a = level."""
+    a0, b0 = fr.ab(seg.x0, seg.z0)
+    a1, b1 = fr.ab(seg.x1, seg.z1)
+    if seg.kind == LINE:
+        if a0 == a1:
+            return []
+        lo, hi = min(a0, a1), max(a0, a1)
+        if not lo - EPS <= level <= hi + EPS:
+            return []
+        return [b0 + (level - a0) * (b1 - b0) / (a1 - a0)]
+    ca, cb = fr.ab(seg.cx, seg.cz)
+    r = math.hypot(a0 - ca, b0 - cb)
+    out = []
+    for pa, pb in line_circle(level, -1.0, level, 1.0, ca, cb, r):
+        if _on_arc(seg, fr, pa, pb):
+            out.append(pb)
+    return out
+
+
+def _on_arc(seg: Seg, fr: _Frame, pa: float, pb: float) -> bool:
+    """Whether the point (a, b) on the circle of ``seg`` lies on the arc itself."""
+    px, pz = fr.xz(pa, pb)
+    def angle(x: float, z: float) -> float:
+        return math.atan2(x - seg.cx, z - seg.cz)  # in (z, x): CCW positive
+    s, e, p = angle(seg.x0, seg.z0), angle(seg.x1, seg.z1), angle(px, pz)
+    sweep = (e - s) % (2 * math.pi) if seg.kind == CCW else (s - e) % (2 * math.pi)
+    at = (p - s) % (2 * math.pi) if seg.kind == CCW else (s - p) % (2 * math.pi)
+    return at <= sweep + 1e-12 or at >= 2 * math.pi - 1e-12
+
+
+def _emit(out: Out, seg: Seg) -> None:
+    if seg.kind == LINE:
+        out.feed(seg.x1, seg.z1)
+    else:
+        out.arc(seg.x1, seg.z1, seg.cx, seg.cz, seg.kind)
+
+
+def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d: float,
+          inc: float, retract: float) -> None:
+    """G71 (``code`` 710, 711, 712) or G72 (720, 721, 722) on ``profile`` from ``start`` (x, z):
+    D ``d``, I ``inc``, R ``retract``."""
+    fr = _Frame(code >= 720)
+    variant = code % 10
+    sa, sb = fr.ab(*start)
+    approach, rest = profile[0], profile[1:]
+    if not rest:
+        out.traverse(*start)
+        _emit(out, approach)
+        return
+    p0a = fr.ab(approach.x1, approach.z1)[0]
+    ea = fr.ab(rest[-1].x1, rest[-1].z1)[0]
+    if fr.swap:
+        s = 1.0 if ea <= p0a else -1.0
+    else:
+        s = 1.0 if ea < p0a else -1.0
+    eb = fr.ab(rest[-1].x1, rest[-1].z1)[1]
+    t = 1.0 if eb >= sb else -1.0
+    far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
+    if far <= s * sa:  # nothing beyond the start: the profile as programmed
+        out.traverse(*start)
+        for seg in profile:
+            _emit(out, seg)
+        return
+    # Left or right of the profile's direction in (z, x) is toward the start.
+    side = -s * t if not fr.swap else s * t
+    moved = offset(rest, side, d)
+    first, last = moved[0], moved[-1]
+    p0a = fr.ab(first.x0, first.z0)[0]
+    la, lb = fr.ab(last.x1, last.z1)
+    closing = Seg(LINE, last.x1, last.z1, *fr.xz(sa, lb))
+    chain = [*moved, closing] if s * la < s * sa or s * la > s * sa else list(moved)
+    approach_line = Seg(LINE, start[0], start[1], first.x0, first.z0)
+
+    def exit_b(level: float, from_b: float) -> float | None:
+        best: float | None = None
+        for seg in chain:
+            for hb in _level_hits(seg, fr, level):
+                if t * (hb - from_b) > EPS and (best is None or t * (hb - best) < 0):
+                    best = hb
+        return best
+
+    out.traverse(*start)
+    k = 0
+    if variant != 2:
+        while True:
+            level = sa + s * k * inc
+            if s * level >= s * p0a - EPS:
+                break
+            hits = _level_hits(approach_line, fr, level)
+            entry = hits[0] if hits else sb
+            end = exit_b(level, entry)
+            if end is None:
+                break
+            out.traverse(*fr.xz(level, entry))
+            out.feed(*fr.xz(level, end))
+            back = level - s * retract
+            out.traverse(*fr.xz(back, end - t * retract))
+            out.traverse(*fr.xz(back, entry + t * retract))
+            out.traverse(*fr.xz(level, entry))
+            k += 1
+    else:
+        while s * (sa + s * k * inc) < s * p0a - EPS:
+            k += 1
+    out.traverse(first.x0, first.z0)
+    for seg in moved:
+        a0 = fr.ab(seg.x0, seg.z0)[0]
+        a1 = fr.ab(seg.x1, seg.z1)[0]
+        if variant != 1 and seg.kind == LINE and s * (a1 - a0) > EPS:
+            while True:
+                level = sa + s * k * inc
+                if s * level < s * a0 - EPS:
+                    k += 1
+                    continue
+                if s * level >= s * a1 - EPS:
+                    break
+                cb = _level_hits(seg, fr, level)[0]
+                end = exit_b(level, cb)
+                out.feed(*fr.xz(level, cb))
+                if end is not None:
+                    out.feed(*fr.xz(level, end))
+                    out.feed(*fr.xz(level, cb))
+                k += 1
+        _emit(out, seg)
+    if chain[-1] is closing:
+        _emit(out, closing)
+
+
+__all__ = ["CW", "rough"]
