@@ -6,6 +6,8 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
 
 * The profile's first move, from the start point, is the approach; the rest is moved ``D`` toward
   the start (``offset``).  ``P0`` is the moved profile's first point, ``E`` its last.
+* A start ahead of the profile's first point along ``b`` (in the direction of the cut) is moved
+  back to that point's ``b``.
 * The passes step from the start toward ``P0``: away from ``E`` on ``a`` (G71: toward larger X when
   E is below P0, else smaller; G72 the same on Z, a tie counting the other way).  If the profile
   lies nowhere beyond the start that way there is nothing to rough: the tool feeds along the
@@ -13,7 +15,9 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
 * Each level ``start + k*I`` before P0: a traverse to where the level meets the approach, a feed
   along ``b`` to the first point where it meets the profile (or the closing line from E back to
   the start's level), a traverse back R on both axes, a traverse to R past the entry, and a
-  traverse to the entry.
+  traverse to the entry (R at most half the pass: a short pass retracts to its middle).  The
+  levels are counted in a frame of rs274's where the step axis is turned round when they rise: a
+  level at 0 reached upward is -0 (rs274's other signs of zero are not all followed yet).
 * Then a traverse to P0 and a feed along the moved profile; where it goes deeper, at each level it
   reaches (from its start, not at its end) it feeds across the pocket to the profile's far side
   and back.  A last feed closes back to the start's level at E.
@@ -101,12 +105,18 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         s = 1.0 if ea < p0a else -1.0
     eb = fr.ab(rest[-1].x1, rest[-1].z1)[1]
     t = 1.0 if eb >= sb else -1.0
+    turn = -s  # how rs274's frame has the step axis (see the levels)
     far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
     if far <= s * sa:  # nothing beyond the start: the profile as programmed
         out.traverse(*start)
         for seg in profile:
             _emit(out, seg)
         return
+    # A start ahead of the profile's first point along the cut starts from that point's b.
+    fb = fr.ab(approach.x1, approach.z1)[1]
+    if t * (sb - fb) > 0:
+        sb = fb
+        start = fr.xz(sa, sb)
     # Left or right of the profile's direction in (z, x) is toward the start.
     side = -s * t if not fr.swap else s * t
     moved = offset(rest, side, d)
@@ -129,7 +139,8 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     k = 0
     if variant != 2:
         while True:
-            level = sa + s * k * inc
+            up = turn * sa + turn * s * k * inc  # in rs274's turned frame (zeros keep its sign)
+            level = turn * up
             if s * level >= s * p0a - EPS:
                 break
             hits = _level_hits(approach_line, fr, level)
@@ -139,9 +150,10 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                 break
             out.traverse(*fr.xz(level, entry))
             out.feed(*fr.xz(level, end))
-            back = level - s * retract
-            out.traverse(*fr.xz(back, end - t * retract))
-            out.traverse(*fr.xz(back, entry + t * retract))
+            r = min(retract, abs(end - entry) / 2.0)  # at most back to the middle of the pass
+            back = turn * (up - turn * s * r)
+            out.traverse(*fr.xz(back, end - t * r))
+            out.traverse(*fr.xz(back, entry + t * r))
             out.traverse(*fr.xz(level, entry))
             k += 1
     else:
@@ -153,7 +165,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         a1 = fr.ab(seg.x1, seg.z1)[0]
         if variant != 1 and seg.kind == LINE and s * (a1 - a0) > EPS:
             while True:
-                level = sa + s * k * inc
+                level = turn * (turn * sa + turn * s * k * inc)
                 if s * level < s * a0 - EPS:
                     k += 1
                     continue
