@@ -360,9 +360,11 @@ class Flow:
             if m.ended:
                 return
 
-    def run_profile(self, call: Block, parse: Callable[[str, int], Block]) -> None:
+    def run_profile(self, call: Block, parse: Callable[[str, int], Block]
+                    ) -> tuple[str | None, int, str]:
         """Run the call ``call`` until it returns, each line read afresh with ``parse`` and run on
-        the general path (a lathe cycle's profile: see handlers/lathe.py)."""
+        the general path (a lathe cycle's profile: see handlers/lathe.py).  Returns the file,
+        number and text of the line that returned."""
         frames = self.frames
         depth = len(frames)
         self.oword(frames[-1], call)
@@ -382,6 +384,7 @@ class Flow:
                 execute(block)
             elif not (block.delete and self.interp.machine.state.blocks_deleted):
                 self.oword(f, block)
+        return f.body.file, number, source
 
     def compile(self, body: Body, number: int, raw: str) -> Plain | Block | Compiled:
         """Read a line once; the compiled entry replaces the raw text in its body."""

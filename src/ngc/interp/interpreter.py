@@ -391,10 +391,10 @@ class Interpreter:
         """A line a handler has the interpreter run (an M72 restore), at the running line."""
         self.execute(self.parse(text, self.machine.line))
 
-    def _run_profile(self, q: float) -> None:
+    def _run_profile(self, q: float) -> tuple[str | None, int, str]:
         """A lathe cycle's ``o<q> call``, every line of it read and run as a profile line (see
         handlers/lathe.py): rs274 runs the line ``O<q> CALL`` (a Q that is not a whole number
-        fails as that line)."""
+        fails as that line).  Returns where the subroutine returned (file, line, text)."""
         m = self.machine
         text = f"O{q:f} CALL"
         try:
@@ -407,7 +407,7 @@ class Interpreter:
             flow.frames[-1].pc = m.line + 1
         fast, self.fast = self.fast, None
         try:
-            flow.run_profile(block, self.parse_profile)
+            return flow.run_profile(block, self.parse_profile)
         finally:
             self.fast = fast
 

@@ -65,7 +65,7 @@ class Machine:
         # recorded here, nothing else of the subroutine's lines runs; None otherwise.  How the
         # cycle runs its subroutine ``o<q> call`` (the interpreter sets it).
         self.profile: list[Any] | None = None
-        self.run_profile: Callable[[float], None] | None = None
+        self.run_profile: Callable[[float], tuple[str | None, int, str]] | None = None
 
     @property
     def tools(self) -> Tools:

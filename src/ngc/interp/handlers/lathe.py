@@ -11,9 +11,11 @@ cycle itself is shown at the subroutine's last line.
 
 from __future__ import annotations
 
+import itertools
+import math
 from typing import TYPE_CHECKING
 
-from ...errors import NgcError, NgcSemanticError
+from ...errors import NgcSemanticError
 from ...language import codes
 from ..lathe.path import Out
 from ..lathe.profile import CCW, CW, LINE, Seg
@@ -40,6 +42,10 @@ def record(m: Machine, r: Words) -> None:
         if not ("x" in w or "z" in w or "u" in w or "w" in w or "y" in w):
             return
         code = st.motion
+    if "u" in w and "x" in w:
+        raise NgcSemanticError("G7x error: Cannot use U and X in the same block")
+    if "w" in w and "z" in w:
+        raise NgcSemanticError("G7x error: Cannot use W and Z in the same block")
     pos = st.pos
     x0, z0 = pos[0], pos[2]
     u = w.get("u", 0.0)
@@ -55,6 +61,8 @@ def record(m: Machine, r: Words) -> None:
     kind = _KINDS.get(code, LINE)
     cx = cz = 0.0
     if kind != LINE:
+        if "i" not in w and "k" not in w and "r" not in w:
+            raise NgcSemanticError("G7X error: either I or K must be present for arc")
         cz, cx = motion.arc_center(m, w, code, pos, end)
     assert m.profile is not None
     m.profile.append(Seg(kind, x0, z0, x1, z1, cx, cz, w.get("a", 0.0), w.get("c", 0.0),
@@ -67,38 +75,78 @@ def cycle(m: Machine, r: Words, code: int) -> None:
     """G70-G72: checks, the preliminary traverse, the profile, the cycle."""
     w = r.w
     st = m.state
+    r_where = (m.label, m.line)
     if "q" not in w:
         raise NgcSemanticError("G7x.x  requires a Q word")
     if st.plane != 180:
         raise NgcSemanticError(f"{_name(code)} can only be used in XZ plane (G18)")
+    if code == 700:
+        raise NgcSemanticError("G70 is not supported yet")
+    if m.comp is not None:
+        raise NgcSemanticError(f"{_name(code)} cannot be used with cutter compensation enabled")
+    pos = st.pos
     target = motion.end_point(m, w, False)
     start = (target[0], target[2])
     out = Out(m)
-    out.traverse(*start)
-    if code == 700:
-        raise NgcSemanticError("G70 is not supported yet")
+    # rs274's first traverse takes the X and Z words as they are, even in G91; the cycle
+    # starts from the point they give in the distance mode
+    out.traverse(w.get("x", pos[0]), w.get("z", pos[2]))
     st.motion = code  # a line of the subroutine with axis words alone runs this motion
-    profile = _record(m, w["q"])
-    where = (m.label, m.line)
+    profile, (file, line, source) = _record(m, w["q"], start)
+    m.line = r_where[1]  # the label stays the one of the subroutine's last line, as in rs274
     try:
-        rough(out, profile, start, code, w.get("d", 0.0), w.get("i", 1.0), w.get("r", 0.5))
-    except NgcError:
-        m.label, m.line = where
-        raise
+        check_monotonic(profile, code >= 720)
+    except NgcSemanticError as err:  # shown at the subroutine's last line
+        raise err.locate(file=file, line=line, source=source) from None
+    rough(out, profile, start, code, w.get("d", 0.0), w.get("i", 1.0), w.get("r", 0.5))
 
 
-def _record(m: Machine, q: float) -> list[Seg]:
-    """Run the subroutine ``q`` as a profile; the machine's position and parameters are as
-    before, the modal motion as its last move left it."""
+def check_monotonic(profile: list[Seg], facing: bool) -> None:
+    """The profile after its first move must not turn back along Z (G71) or X (G72)."""
+    direction = 0.0
+    for seg in profile[1:]:
+        values = [seg.x0, seg.x1] if facing else [seg.z0, seg.z1]
+        if seg.kind != LINE:  # an arc passing its extreme on that axis turns back
+            r = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
+            centre = seg.cx if facing else seg.cz
+            for extreme in (centre - r, centre + r):
+                px, pz = (extreme, seg.cz) if facing else (seg.cx, extreme)
+                if _inside(seg, px, pz):
+                    values.insert(1, extreme)
+        for v0, v1 in itertools.pairwise(values):
+            step = v1 - v0
+            if abs(step) < 1e-12:
+                continue
+            if direction * step < 0:
+                raise NgcSemanticError("G7X error: Not monotonic")
+            direction = step
+
+
+def _inside(seg: Seg, px: float, pz: float) -> bool:
+    """Whether a point of the arc's circle lies strictly inside the arc ``seg``."""
+    def angle(x: float, z: float) -> float:
+        return math.atan2(x - seg.cx, z - seg.cz)
+    s, e, p = angle(seg.x0, seg.z0), angle(seg.x1, seg.z1), angle(px, pz)
+    turn = 2 * math.pi
+    if seg.kind == CCW:
+        return 1e-9 < (p - s) % turn < (e - s) % turn - 1e-9
+    return 1e-9 < (s - p) % turn < (s - e) % turn - 1e-9
+
+
+def _record(m: Machine, q: float, start: tuple[float, float]
+            ) -> tuple[list[Seg], tuple[str | None, int, str]]:
+    """Run the subroutine ``q`` as a profile from ``start``; the machine's position and
+    parameters are as before, the modal motion as its last move left it."""
     st = m.state
     params = m.params
     pos = list(st.pos)
+    st.pos = [start[0], pos[1], start[1], pos[3], pos[4], pos[5]]
     numbered = list(params.numbered)
     named = dict(params.globals)
     m.profile = []
     assert m.run_profile is not None
     try:
-        m.run_profile(q)
+        where = m.run_profile(q)
         profile: list[Seg] = m.profile
     finally:
         m.profile = None
@@ -106,4 +154,4 @@ def _record(m: Machine, q: float) -> list[Seg]:
         params.numbered[:] = numbered
         params.globals.clear()
         params.globals.update(named)
-    return profile
+    return profile, where

@@ -93,9 +93,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     variant = code % 10
     sa, sb = fr.ab(*start)
     approach, rest = profile[0], profile[1:]
-    if not rest:
-        out.traverse(*start)
-        _emit(out, approach)
+    if not rest:  # the approach alone: nothing to cut
         return
     p0a = fr.ab(approach.x1, approach.z1)[0]
     ea = fr.ab(rest[-1].x1, rest[-1].z1)[0]
