@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 from ...errors import NgcError, NgcSemanticError
 from ...language import codes
+from ..lathe.finishing import g70
 from ..lathe.path import Out
 from ..lathe.profile import CCW, CW, LINE, Seg
 from ..lathe.roughing import rough
@@ -75,13 +76,14 @@ def cycle(m: Machine, r: Words, code: int) -> None:
     start = (target[0], target[2])
     out = Out(m)
     out.traverse(*start)
-    if code == 700:
-        raise NgcSemanticError("G70 is not supported yet")
     st.motion = code  # a line of the subroutine with axis words alone runs this motion
     profile = _record(m, w["q"])
     where = (m.label, m.line)
     try:
-        rough(out, profile, start, code, w.get("d", 0.0), w.get("i", 1.0), w.get("r", 0.5))
+        if code == 700:
+            g70(out, profile, start, w.get("d", 0.0), w.get("e", 0.0), w.get("p", 1.0))
+        else:
+            rough(out, profile, start, code, w.get("d", 0.0), w.get("i", 1.0), w.get("r", 0.5))
     except NgcError:
         m.label, m.line = where
         raise
