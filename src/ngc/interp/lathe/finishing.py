@@ -90,6 +90,36 @@ def _on(seg: Seg, pt: tuple[float, float]) -> bool:
     return (a - a0) % (2 * math.pi) <= sweep + 1e-9 or (a - a0) % (2 * math.pi) >= 2 * math.pi - 1e-9
 
 
+def _crossings(a: Seg, b: Seg) -> list[tuple[float, float]]:
+    """Where the carriers of two moved segments cross; carriers that just miss each other (a
+    corner close to tangent) meet where they come closest."""
+    points = intersections(a, b)
+    if points:
+        return points
+    if a.kind == LINE and b.kind == LINE:
+        raise NgcSemanticError(PARALLEL)
+    if a.kind == LINE or b.kind == LINE:
+        line, arc = (a, b) if a.kind == LINE else (b, a)
+        dx, dz = line.x1 - line.x0, line.z1 - line.z0
+        t = ((arc.cx - line.x0) * dx + (arc.cz - line.z0) * dz) / (dx * dx + dz * dz)
+        return [(line.x0 + t * dx, line.z0 + t * dz)]
+    r1 = math.hypot(a.x0 - a.cx, a.z0 - a.cz)
+    dx, dz = b.cx - a.cx, b.cz - a.cz
+    n = math.hypot(dx, dz)
+    return [(a.cx + dx / n * r1, a.cz + dz / n * r1)]
+
+
+def _along(seg: Seg, pt: tuple[float, float]) -> float:
+    """How far along ``seg`` (from its start, in its direction) ``pt`` lies."""
+    x, z = pt
+    if seg.kind == LINE:
+        return (x - seg.x0) * (seg.x1 - seg.x0) + (z - seg.z0) * (seg.z1 - seg.z0)
+    a0 = math.atan2(seg.x0 - seg.cx, seg.z0 - seg.cz)
+    a = math.atan2(x - seg.cx, z - seg.cz)
+    turn = (a - a0) % (2 * math.pi) if seg.kind == CCW else (a0 - a) % (2 * math.pi)
+    return turn if turn < 1.5 * math.pi else turn - 2 * math.pi
+
+
 def moved(profile: Profile, side: float, d: float) -> list[Seg]:
     """The profile after ``F`` moved ``d`` to ``side``, its corners joined."""
     moves = profile[1:]
@@ -110,15 +140,14 @@ def moved(profile: Profile, side: float, d: float) -> list[Seg]:
         if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
             out.append(seg)
             continue
-        points = intersections(prev, seg)
         outside = turn * side * d < 0 and abs(turn) > TANGENT
-        if outside or not points:  # the moved segments part: an arc about the corner
+        if outside:  # the moved segments part: an arc about the corner joins them
             corner = moves[i]
             out.append(Seg(CCW if turn > 0 else CW, prev.x1, prev.z1, seg.x0, seg.z0,
                            corner.x0, corner.z0, line=corner.line))
             out.append(seg)
             continue
-        px, pz = min(points, key=lambda p: math.hypot(p[0] - prev.x1, p[1] - prev.z1))
+        px, pz = min(_crossings(prev, seg), key=lambda pt: _along(prev, pt))
         out[-1] = prev._replace(x1=px, z1=pz)
         out.append(seg._replace(x0=px, z0=pz))
     return out
