@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 from ...errors import NgcSemanticError
 from ...language import codes
+from ..lathe.finishing import g70
 from ..lathe.path import Out
 from ..lathe.profile import CCW, CW, LINE, Seg
 from ..lathe.roughing import rough
@@ -80,9 +81,9 @@ def cycle(m: Machine, r: Words, code: int) -> None:
         raise NgcSemanticError("G7x.x  requires a Q word")
     if st.plane != 180:
         raise NgcSemanticError(f"{_name(code)} can only be used in XZ plane (G18)")
-    if code == 700:
-        raise NgcSemanticError("G70 is not supported yet")
     if m.comp is not None:
+        if code == 700:  # rs274 runs it compensated
+            raise NgcSemanticError("G70 with cutter compensation on is not supported yet")
         raise NgcSemanticError(f"{_name(code)} cannot be used with cutter compensation enabled")
     pos = st.pos
     target = motion.end_point(m, w, False)
@@ -96,9 +97,12 @@ def cycle(m: Machine, r: Words, code: int) -> None:
     m.line = r_where[1]  # the label stays the one of the subroutine's last line, as in rs274
     try:
         check_monotonic(profile, code >= 720)
+        if code == 700:
+            g70(out, profile, start, w.get("d", 0.0), w.get("e", 0.0), w.get("p", 1.0))
+        else:
+            rough(out, profile, start, code, w.get("d", 0.0), w.get("i", 1.0), w.get("r", 0.5))
     except NgcSemanticError as err:  # shown at the subroutine's last line
         raise err.locate(file=file, line=line, source=source) from None
-    rough(out, profile, start, code, w.get("d", 0.0), w.get("i", 1.0), w.get("r", 0.5))
 
 
 def check_monotonic(profile: list[Seg], facing: bool) -> None:
