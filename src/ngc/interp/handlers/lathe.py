@@ -95,6 +95,9 @@ def cycle(m: Machine, r: Words, code: int) -> None:
     st.motion = code  # a line of the subroutine with axis words alone runs this motion
     profile, (file, line, source) = _record(m, w["q"], start)
     m.line = r_where[1]  # the label stays the one of the subroutine's last line, as in rs274
+    if any(seg.fillet or seg.chamfer for seg in profile):
+        raise NgcSemanticError("A fillet or chamfer (A or C word) in a lathe cycle's profile is "
+                               "not supported yet")
     try:
         check_monotonic(profile, code >= 720)
         if code == 700:
