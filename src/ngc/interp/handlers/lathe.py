@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 from ...errors import NgcSemanticError
 from ...language import codes
+from ..lathe.corners import BOTH_A_AND_C, round_corners
 from ..lathe.finishing import g70
 from ..lathe.path import Out
 from ..lathe.profile import CCW, CW, LINE, Seg
@@ -65,6 +66,8 @@ def record(m: Machine, r: Words) -> None:
         if "i" not in w and "k" not in w and "r" not in w:
             raise NgcSemanticError("G7X error: either I or K must be present for arc")
         cz, cx = motion.arc_center(m, w, code, pos, end)
+    if w.get("a") and w.get("c"):
+        raise NgcSemanticError(BOTH_A_AND_C)
     assert m.profile is not None
     m.profile.append(Seg(kind, x0, z0, x1, z1, cx, cz, w.get("a", 0.0), w.get("c", 0.0),
                          m.line))
@@ -95,10 +98,8 @@ def cycle(m: Machine, r: Words, code: int) -> None:
     st.motion = code  # a line of the subroutine with axis words alone runs this motion
     profile, (file, line, source) = _record(m, w["q"], start)
     m.line = r_where[1]  # the label stays the one of the subroutine's last line, as in rs274
-    if any(seg.fillet or seg.chamfer for seg in profile):
-        raise NgcSemanticError("A fillet or chamfer (A or C word) in a lathe cycle's profile is "
-                               "not supported yet")
     try:
+        profile = round_corners(profile)
         check_monotonic(profile, code >= 720)
         if code == 700:
             g70(out, profile, start, w.get("d", 0.0), w.get("e", 0.0), w.get("p", 1.0))
