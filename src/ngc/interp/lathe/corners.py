@@ -26,6 +26,7 @@ What rs274 shows:
 
 from __future__ import annotations
 
+import itertools
 import math
 
 from ...errors import NgcSemanticError
@@ -68,9 +69,10 @@ def _shifted_radius(seg: Seg, side: float, r: float) -> float:
     return _radius(seg) - toward_centre * r
 
 
-def _near(points: list[tuple[float, float]], px: float, pz: float) -> tuple[float, float]:
+def _near(points: list[tuple[float, float]], px: float,
+          pz: float) -> tuple[float, float] | None:
     if not points:  # the radius is too big for the corner
-        raise NgcSemanticError(NOT_MONOTONIC)
+        return None
     return min(points, key=lambda p: math.hypot(p[0] - px, p[1] - pz))
 
 
@@ -129,7 +131,7 @@ def _foot(seg: Seg, ox: float, oz: float) -> tuple[float, float]:
     return seg.cx + (ox - seg.cx) * r / d, seg.cz + (oz - seg.cz) * r / d
 
 
-def _centre(a: Seg, b: Seg, side: float, r: float) -> tuple[float, float]:
+def _centre(a: Seg, b: Seg, side: float, r: float) -> tuple[float, float] | None:
     """The centre of the circle of radius ``r`` tangent to ``a`` and ``b`` on ``side``."""
     px, pz = a.x1, a.z1
     if a.kind == LINE and b.kind == LINE:
@@ -161,39 +163,52 @@ def _kept(new: Seg, old: Seg) -> bool:
 
 def round_corners(profile: Profile) -> Profile:
     """``profile`` with a fillet arc or chamfer line at the end of each move that asks for one
-    (but the last), the moves on either side cut back to meet it."""
+    (but the last), the moves on either side cut back to meet it, and its shortest moves dropped
+    (``drop_short``).
+
+    Every corner is worked out before any move is checked: two parallel lines at a later corner
+    are reported before a move cut back too far at an earlier one."""
     if not profile:
         return []
-    out: Profile = []
-    cur = profile[0]
-    orig = profile[0]
-    for nxt in profile[1:]:
+    made: list[Seg | None] = []  # per corner: its fillet arc or chamfer line
+    too_big = False
+    for cur, nxt in itertools.pairwise(profile):
         size = abs(cur.fillet) or abs(cur.chamfer)
         if size == 0.0:
-            if not _kept(cur, orig):
-                raise NgcSemanticError(NOT_MONOTONIC)
-            out.append(cur)
-            cur = orig = nxt
+            made.append(None)
             continue
         t1 = _tangent(cur, True)
         t2 = _tangent(nxt, False)
         side = 1.0 if t1[0] * t2[1] - t1[1] * t2[0] > 0.0 else -1.0
-        ox, oz = _centre(cur, nxt, side, size)
+        centre = _centre(cur, nxt, side, size)
+        if centre is None:
+            too_big = True
+            made.append(None)
+            continue
+        ox, oz = centre
         ax, az = _foot(cur, ox, oz)
         bx, bz = _foot(nxt, ox, oz)
-        trimmed = cur._replace(x1=ax, z1=az, fillet=0.0, chamfer=0.0)
-        if not _kept(trimmed, orig):
-            raise NgcSemanticError(NOT_MONOTONIC)
-        out.append(trimmed)
         if cur.fillet:
-            out.append(Seg(CCW if side > 0 else CW, ax, az, bx, bz, ox, oz, line=cur.line))
+            corner = Seg(CCW if side > 0 else CW, ax, az, bx, bz, ox, oz, line=cur.line)
         else:
-            out.append(Seg(LINE, ax, az, bx, bz, line=cur.line))
-        orig = nxt
-        cur = nxt._replace(x0=bx, z0=bz)
-    out.append(cur._replace(fillet=0.0, chamfer=0.0))
-    if not _kept(out[-1], orig):
+            corner = Seg(LINE, ax, az, bx, bz, line=cur.line)
+        made.append(corner)
+    if too_big:
         raise NgcSemanticError(NOT_MONOTONIC)
+    out: Profile = []
+    for i, seg in enumerate(profile):
+        cut = seg._replace(fillet=0.0, chamfer=0.0)
+        before = made[i - 1] if i else None
+        after = made[i] if i < len(made) else None
+        if before is not None:
+            cut = cut._replace(x0=before.x1, z0=before.z1)
+        if after is not None:
+            cut = cut._replace(x1=after.x0, z1=after.z0)
+        if not _kept(cut, seg):
+            raise NgcSemanticError(NOT_MONOTONIC)
+        out.append(cut)
+        if after is not None:
+            out.append(after)
     return drop_short(out)
 
 
