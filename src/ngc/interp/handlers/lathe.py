@@ -66,7 +66,7 @@ def record(m: Machine, r: Words) -> None:
         if "i" not in w and "k" not in w and "r" not in w:
             raise NgcSemanticError("G7X error: either I or K must be present for arc")
         cz, cx = motion.arc_center(m, w, code, pos, end)
-    if w.get("a") and w.get("c"):
+    if "a" in w and "c" in w:
         raise NgcSemanticError(BOTH_A_AND_C)
     assert m.profile is not None
     m.profile.append(Seg(kind, x0, z0, x1, z1, cx, cz, w.get("a", 0.0), w.get("c", 0.0),

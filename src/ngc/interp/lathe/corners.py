@@ -20,6 +20,8 @@ What rs274 shows:
   length: the corner stays as it was (the profile's shortest moves are dropped afterwards).
 * A and C on one move: "G7X error: Both A and C parameters on a corner", when the move is recorded
   (``BOTH_A_AND_C``).
+* A move that ends where it starts is left out, with its A or C (the move before it meets the
+  move after it).
 * G0 moves of the profile take A and C like G1 moves; the first move (from the cycle's start point)
   has a corner at its end like any other.
 """
@@ -168,6 +170,8 @@ def round_corners(profile: Profile) -> Profile:
 
     Every corner is worked out before any move is checked: two parallel lines at a later corner
     are reported before a move cut back too far at an earlier one."""
+    # a move that goes nowhere is no move: its A or C goes with it
+    profile = [seg for seg in profile if seg.x1 != seg.x0 or seg.z1 != seg.z0]
     if not profile:
         return []
     made: list[Seg | None] = []  # per corner: its fillet arc or chamfer line
