@@ -168,14 +168,14 @@ def round_corners(profile: Profile) -> Profile:
     (but the last), the moves on either side cut back to meet it, and its shortest moves dropped
     (``drop_short``).
 
-    Every corner is worked out before any move is checked: two parallel lines at a later corner
-    are reported before a move cut back too far at an earlier one."""
+    A corner cutting a line back past its other end, or too big to be made, is refused at once;
+    an arc cut back too far, or a line cut back at both ends until they cross, only once every
+    corner is made (two parallel lines at a later corner are reported first)."""
     # a move that goes nowhere is no move: its A or C goes with it
     profile = [seg for seg in profile if seg.x1 != seg.x0 or seg.z1 != seg.z0]
     if not profile:
         return []
     made: list[Seg | None] = []  # per corner: its fillet arc or chamfer line
-    too_big = False
     for cur, nxt in itertools.pairwise(profile):
         size = abs(cur.fillet) or abs(cur.chamfer)
         if size == 0.0:
@@ -186,19 +186,18 @@ def round_corners(profile: Profile) -> Profile:
         side = 1.0 if t1[0] * t2[1] - t1[1] * t2[0] > 0.0 else -1.0
         centre = _centre(cur, nxt, side, size)
         if centre is None:
-            too_big = True
-            made.append(None)
-            continue
+            raise NgcSemanticError(NOT_MONOTONIC)
         ox, oz = centre
         ax, az = _foot(cur, ox, oz)
         bx, bz = _foot(nxt, ox, oz)
+        if not ((cur.kind != LINE or _kept(cur._replace(x1=ax, z1=az), cur))
+                and (nxt.kind != LINE or _kept(nxt._replace(x0=bx, z0=bz), nxt))):
+            raise NgcSemanticError(NOT_MONOTONIC)
         if cur.fillet:
             corner = Seg(CCW if side > 0 else CW, ax, az, bx, bz, ox, oz, line=cur.line)
         else:
             corner = Seg(LINE, ax, az, bx, bz, line=cur.line)
         made.append(corner)
-    if too_big:
-        raise NgcSemanticError(NOT_MONOTONIC)
     out: Profile = []
     for i, seg in enumerate(profile):
         cut = seg._replace(fillet=0.0, chamfer=0.0)
