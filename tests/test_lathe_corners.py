@@ -11,7 +11,7 @@ from __future__ import annotations
 import pytest
 
 from ngc.errors import NgcError
-from ngc.interp.lathe.corners import drop_short, round_corners
+from ngc.interp.lathe.corners import A_ZERO, drop_short, round_corners
 from ngc.interp.lathe.profile import CCW, LINE, Seg
 
 # (name, segments as (kind, x0, z0, x1, z1, cx, cz, A, C), rs274's moves)
@@ -368,3 +368,13 @@ def test_drop_short_keeps_the_first_move() -> None:
 
 def test_empty() -> None:
     assert round_corners([]) == []
+
+
+def test_a_zero_refused_anywhere() -> None:
+    # rs274: an A of 0, even on the last move, even after parallel lines with A1
+    profile = [Seg(LINE, 20, 2, 10, 0), Seg(LINE, 10, 0, 10, -10, fillet=1),
+               Seg(LINE, 10, -10, 10, -20), Seg(LINE, 10, -20, 12, -20, fillet=A_ZERO)]
+    with pytest.raises(NgcError, match="G7X error: Not monotonic"):
+        round_corners(profile)
+    with pytest.raises(NgcError, match="parallel"):
+        round_corners([*profile[:3], profile[3]._replace(fillet=0.0)])

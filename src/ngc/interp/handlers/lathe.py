@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 from ...errors import NgcSemanticError
 from ...language import codes
-from ..lathe.corners import BOTH_A_AND_C, round_corners
+from ..lathe.corners import A_ZERO, BOTH_A_AND_C, round_corners
 from ..lathe.finishing import g70
 from ..lathe.path import Out
 from ..lathe.profile import CCW, CW, LINE, Seg
@@ -69,8 +69,8 @@ def record(m: Machine, r: Words) -> None:
     if "a" in w and "c" in w:
         raise NgcSemanticError(BOTH_A_AND_C)
     assert m.profile is not None
-    m.profile.append(Seg(kind, x0, z0, x1, z1, cx, cz, w.get("a", 0.0), w.get("c", 0.0),
-                         m.line))
+    fillet = w.get("a", 0.0) or (A_ZERO if "a" in w else 0.0)
+    m.profile.append(Seg(kind, x0, z0, x1, z1, cx, cz, fillet, w.get("c", 0.0), m.line))
     st.pos = end
     st.motion = code
 

@@ -18,6 +18,9 @@ What rs274 shows:
   together: "G7X error: Not monotonic" (the docs' "non-monotonic path error" of a radius too big).
 * A line meeting an arc, or two arcs, that touch at the corner without turning give a fillet of no
   length: the corner stays as it was (the profile's shortest moves are dropped afterwards).
+* An A word of 0 (or -0), on any move, even the last: "G7X error: Not monotonic", before any
+  corner is made (a C of 0 does nothing).  The recording gives such a move the ``fillet``
+  ``A_ZERO`` (-0.0).
 * A and C on one move: "G7X error: Both A and C parameters on a corner", when the move is recorded
   (``BOTH_A_AND_C``).
 * A move that ends where it starts is left out, with its A or C (the move before it meets the
@@ -37,6 +40,8 @@ from .profile import CCW, CW, LINE, Profile, Seg
 BOTH_A_AND_C = "G7X error: Both A and C parameters on a corner"
 NOT_MONOTONIC = "G7X error: Not monotonic"
 PARALLEL = "G7X error: Cannot intersect parallel lines"
+A_ZERO = -0.0
+"""The ``fillet`` of a move whose A word is 0: told apart from a move without A by its sign."""
 _TOUCH = 1e-9  # relative: a line or circle this near to touching a circle touches it
 _ANGLE = 1e-6  # radians an arc may gain at a fillet of no size (where it touches its neighbour)
 _SHORT = 1e-3  # moves shorter than this (program units) are dropped
@@ -171,6 +176,8 @@ def round_corners(profile: Profile) -> Profile:
     A corner cutting a line back past its other end, or too big to be made, is refused at once;
     an arc cut back too far, or a line cut back at both ends until they cross, only once every
     corner is made (two parallel lines at a later corner are reported first)."""
+    if any(seg.fillet == 0.0 and math.copysign(1.0, seg.fillet) < 0.0 for seg in profile):
+        raise NgcSemanticError(NOT_MONOTONIC)  # an A of 0 anywhere, before any corner is made
     # a move that goes nowhere is no move: its A or C goes with it
     profile = [seg for seg in profile if seg.x1 != seg.x0 or seg.z1 != seg.z0]
     if not profile:
