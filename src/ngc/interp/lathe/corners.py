@@ -138,8 +138,10 @@ def _foot(seg: Seg, ox: float, oz: float) -> tuple[float, float]:
     return seg.cx + (ox - seg.cx) * r / d, seg.cz + (oz - seg.cz) * r / d
 
 
-def _centre(a: Seg, b: Seg, side: float, r: float) -> tuple[float, float] | None:
-    """The centre of the circle of radius ``r`` tangent to ``a`` and ``b`` on ``side``."""
+def _centre(a: Seg, b: Seg, side: float, r: float,
+            flip: bool) -> tuple[float, float] | None:
+    """The centre of the circle of radius ``r`` tangent to ``a`` and ``b`` on ``side``; ``flip``
+    when the profile runs toward -X or toward +Z, not both."""
     px, pz = a.x1, a.z1
     if a.kind == LINE and b.kind == LINE:
         return _line_line(_shifted_line(a, side, r), _shifted_line(b, side, r))
@@ -147,8 +149,11 @@ def _centre(a: Seg, b: Seg, side: float, r: float) -> tuple[float, float] | None
         line, arc = (a, b) if a.kind == LINE else (b, a)
         return _near(_line_circle(_shifted_line(line, side, r), arc.cx, arc.cz,
                                   _shifted_radius(arc, side, r)), px, pz)
-    return _near(_circle_circle(a.cx, a.cz, _shifted_radius(a, side, r),
-                                b.cx, b.cz, _shifted_radius(b, side, r)), px, pz)
+    # two arcs: not the crossing nearest the corner but the one on a fixed side of the line
+    # from the first arc's centre to the second's, in the profile turned to run toward +X and -Z
+    points = _circle_circle(a.cx, a.cz, _shifted_radius(a, side, r),
+                            b.cx, b.cz, _shifted_radius(b, side, r))
+    return points[1 if flip else 0] if points else None
 
 
 def _sweep(seg: Seg) -> float:
@@ -183,6 +188,8 @@ def round_corners(profile: Profile) -> Profile:
     if not profile:
         return []
     made: list[Seg | None] = []  # per corner: its fillet arc or chamfer line
+    first, last = profile[0], profile[-1]
+    flip = (last.x1 < first.x1) != (last.z1 > first.z1)
     for cur, nxt in itertools.pairwise(profile):
         size = abs(cur.fillet) or abs(cur.chamfer)
         if size == 0.0:
@@ -191,7 +198,7 @@ def round_corners(profile: Profile) -> Profile:
         t1 = _tangent(cur, True)
         t2 = _tangent(nxt, False)
         side = 1.0 if t1[0] * t2[1] - t1[1] * t2[0] > 0.0 else -1.0
-        centre = _centre(cur, nxt, side, size)
+        centre = _centre(cur, nxt, side, size, flip)
         if centre is None:
             raise NgcSemanticError(NOT_MONOTONIC)
         ox, oz = centre
