@@ -35,7 +35,41 @@ from .path import Out
 from .profile import CCW, CW, LINE, Profile, Seg
 
 TANGENT = 1e-3  # the sine of a turn below which an outside corner is cut like an inside one
+NOT_MONOTONIC = "G7X error: Not monotonic"
 PARALLEL = "G7X error: Cannot intersect parallel lines"
+
+
+def _steps(seg: Seg, axis: int) -> tuple[float, bool]:
+    """The change of ``seg`` along X (``axis`` 0) or Z (1) and whether it goes one way there
+    (an arc that turns back on that axis does not)."""
+    v0, v1 = (seg.x0, seg.x1) if axis == 0 else (seg.z0, seg.z1)
+    if seg.kind == LINE:
+        return v1 - v0, True
+    # the arc's extremes on the axis lie where its radius is parallel to the axis
+    for extreme in (0.0, math.pi) if axis == 1 else (math.pi / 2, -math.pi / 2):
+        if _within(seg, extreme):
+            return v1 - v0, False
+    return v1 - v0, True
+
+
+def _within(seg: Seg, angle: float) -> bool:
+    """Whether the direction ``angle`` (atan2(x, z) about the centre) lies strictly inside the
+    arc ``seg``."""
+    a0 = math.atan2(seg.x0 - seg.cx, seg.z0 - seg.cz)
+    a1 = math.atan2(seg.x1 - seg.cx, seg.z1 - seg.cz)
+    if seg.kind == CW:
+        a0, a1 = a1, a0
+    sweep = (a1 - a0) % (2 * math.pi)
+    at = (angle - a0) % (2 * math.pi)
+    return EPS < at < sweep - EPS
+
+
+def _monotonic(moves: list[Seg], axis: int, way: float) -> bool:
+    for seg in moves:
+        step, one_way = _steps(seg, axis)
+        if not one_way or step * way < 0:
+            return False
+    return True
 
 
 def _entry(profile: Profile, start: tuple[float, float]) -> tuple[float, float]:
@@ -46,14 +80,13 @@ def _entry(profile: Profile, start: tuple[float, float]) -> tuple[float, float]:
     moves = profile[1:]
     if not moves:
         return start
-    rises = any(s.z1 - s.z0 > 0 for s in moves)
-    falls = any(s.z1 - s.z0 < 0 for s in moves)
+    way = 1.0 if any(seg.z1 - seg.z0 > 0 for seg in moves[1:]) else -1.0
+    if _monotonic(moves, 1, way):
+        return (sx, fz) if (sz - fz) * way > 0 else start
     last = moves[-1]
-    if not rises:
-        return (sx, fz) if (sz - fz) * -1.0 > 0 else start
-    if not falls and len(moves) > 1 and last.z1 - last.z0 > 0:
-        return (sx, fz) if sz - fz > 0 else start
     way = 1.0 if last.x1 - fx > 0 else -1.0
+    if not _monotonic(moves, 0, way):
+        raise NgcSemanticError(NOT_MONOTONIC)
     return (fx, sz) if (sx - fx) * way > 0 else start
 
 
