@@ -72,55 +72,38 @@ def _monotonic(moves: list[Seg], axis: int, way: float) -> bool:
     return True
 
 
-def _entry(profile: Profile, start: tuple[float, float]) -> tuple[float, float]:
-    """The point ``I`` each pass comes from (see the module's description)."""
+def _entry(profile: Profile, start: tuple[float, float]) -> tuple[tuple[float, float], bool]:
+    """The point ``I`` each pass comes from, and whether the profile goes along Z (see the
+    module's description)."""
     sx, sz = start
     first = profile[0]
     fx, fz = first.x1, first.z1
     moves = profile[1:]
-    if not moves:
-        return start
     way = 1.0 if any(seg.z1 - seg.z0 > 0 for seg in moves[1:]) else -1.0
     if _monotonic(moves, 1, way):
-        return (sx, fz) if (sz - fz) * way > 0 else start
+        return ((sx, fz) if (sz - fz) * way > 0 else start), True
     last = moves[-1]
     way = 1.0 if last.x1 - fx > 0 else -1.0
     if not _monotonic(moves, 0, way):
         raise NgcSemanticError(NOT_MONOTONIC)
-    return (fx, sz) if (sx - fx) * way > 0 else start
+    return ((fx, sz) if (sx - fx) * way > 0 else start), False
 
 
-def _side(profile: Profile, entry: tuple[float, float]) -> float:
+def _side(profile: Profile, entry: tuple[float, float], along_z: bool) -> float:
     """+1: the profile moves to its left (in the (z, x) plane), -1: to its right."""
-    seg = profile[1]
-    tz, tx = tangent(seg, False)
-    if len(profile) == 2:
+    moves = profile[1:]
+    first, last = moves[0], moves[-1]
+    if len(moves) == 1:
         # the side whose normal (-tx, tz) points +Z, else +X
+        tz, tx = tangent(first, False)
         return 1.0 if -tx > 0 or (tx == 0 and tz > 0) else -1.0
-    vz, vx = entry[1] - seg.z0, entry[0] - seg.x0
+    # the side of I from the line through the first point and the last move's start
+    tz, tx = last.z0 - first.z0, last.x0 - first.x0
+    vz, vx = entry[1] - first.z0, entry[0] - first.x0
     c = tz * vx - tx * vz
     if c == 0:
-        return -1.0
+        return 1.0 if along_z else -1.0
     return 1.0 if c > 0 else -1.0
-
-
-def _on(seg: Seg, pt: tuple[float, float]) -> bool:
-    """Whether ``pt`` (on the segment's line or circle) lies within the segment."""
-    x, z = pt
-    if seg.kind == LINE:
-        dx, dz = seg.x1 - seg.x0, seg.z1 - seg.z0
-        n = dx * dx + dz * dz
-        if n == 0.0:
-            return False
-        t = ((x - seg.x0) * dx + (z - seg.z0) * dz) / n
-        return -1e-9 <= t <= 1 + 1e-9
-    a0 = math.atan2(seg.x0 - seg.cx, seg.z0 - seg.cz)
-    a1 = math.atan2(seg.x1 - seg.cx, seg.z1 - seg.cz)
-    a = math.atan2(x - seg.cx, z - seg.cz)
-    if seg.kind == CW:  # clockwise in (z, x): walk it backwards
-        a0, a1 = a1, a0
-    sweep = (a1 - a0) % (2 * math.pi)
-    return (a - a0) % (2 * math.pi) <= sweep + 1e-9 or (a - a0) % (2 * math.pi) >= 2 * math.pi - 1e-9
 
 
 def _crossings(a: Seg, b: Seg) -> list[tuple[float, float]]:
@@ -195,8 +178,10 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
     passes = int(p)
     if passes <= 0:
         return
-    entry = _entry(profile, start)
-    side = _side(profile, entry) if len(profile) > 1 else 1.0
+    if len(profile) < 2:
+        return  # (no profile after the approach: nothing to follow)
+    entry, along_z = _entry(profile, start)
+    side = _side(profile, entry, along_z)
     first = profile[0]
     for k in range(passes, 0, -1):
         dist = (k - 1) * (d - e) / p + e
