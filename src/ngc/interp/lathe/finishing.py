@@ -72,38 +72,39 @@ def _monotonic(moves: list[Seg], axis: int, way: float) -> bool:
     return True
 
 
-def _entry(profile: Profile, start: tuple[float, float]) -> tuple[tuple[float, float], bool]:
-    """The point ``I`` each pass comes from, and whether the profile goes along Z (see the
-    module's description)."""
+def _entry(profile: Profile, start: tuple[float, float]
+           ) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The point ``I`` each pass comes from, and the (z, x) direction the profile goes along
+    (see the module's description)."""
     sx, sz = start
     first = profile[0]
     fx, fz = first.x1, first.z1
     moves = profile[1:]
     way = 1.0 if any(seg.z1 - seg.z0 > 0 for seg in moves[1:]) else -1.0
     if _monotonic(moves, 1, way):
-        return ((sx, fz) if (sz - fz) * way > 0 else start), True
+        return ((sx, fz) if (sz - fz) * way > 0 else start), (way, 0.0)
     last = moves[-1]
     way = 1.0 if last.x1 - fx > 0 else -1.0
     if not _monotonic(moves, 0, way):
         raise NgcSemanticError(NOT_MONOTONIC)
-    return ((fx, sz) if (sx - fx) * way > 0 else start), False
+    return ((fx, sz) if (sx - fx) * way > 0 else start), (0.0, way)
 
 
-def _side(profile: Profile, entry: tuple[float, float], along_z: bool) -> float:
-    """+1: the profile moves to its left (in the (z, x) plane), -1: to its right."""
+def _side(profile: Profile, entry: tuple[float, float], axis: tuple[float, float]) -> float:
+    """+1: the profile moves to its left (in the (z, x) plane), -1: to its right.  ``axis``: the
+    unit (z, x) direction the profile goes along."""
     moves = profile[1:]
     first, last = moves[0], moves[-1]
-    if len(moves) == 1:
-        # the side whose normal (-tx, tz) points +Z, else +X
-        tz, tx = tangent(first, False)
-        return 1.0 if -tx > 0 or (tx == 0 and tz > 0) else -1.0
     # the side of I from the line through the first point and the last move's start
     tz, tx = last.z0 - first.z0, last.x0 - first.x0
     vz, vx = entry[1] - first.z0, entry[0] - first.x0
     c = tz * vx - tx * vz
-    if c == 0:
-        return 1.0 if along_z else -1.0
-    return 1.0 if c > 0 else -1.0
+    if c != 0:
+        return 1.0 if c > 0 else -1.0
+    # I in line (or a profile of one move): the side back against the way the profile goes
+    tz, tx = tangent(first, False)
+    back = -tx * axis[0] + tz * axis[1]  # the left normal (-tx, tz) along the axis
+    return -1.0 if back >= 0 else 1.0
 
 
 def _crossings(a: Seg, b: Seg) -> list[tuple[float, float]]:
@@ -180,8 +181,8 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
         return
     if len(profile) < 2:
         return  # (no profile after the approach: nothing to follow)
-    entry, along_z = _entry(profile, start)
-    side = _side(profile, entry, along_z)
+    entry, axis = _entry(profile, start)
+    side = _side(profile, entry, axis)
     first = profile[0]
     for k in range(passes, 0, -1):
         dist = (k - 1) * (d - e) / p + e
