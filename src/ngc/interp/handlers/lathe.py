@@ -100,10 +100,10 @@ def cycle(m: Machine, r: Words, code: int) -> None:
     m.line = r_where[1]  # the label stays the one of the subroutine's last line, as in rs274
     try:
         profile = round_corners(profile)
-        check_monotonic(profile, code >= 720)
-        if code == 700:
+        if code == 700:  # (G70 takes a profile monotonic in Z or else in X)
             g70(out, profile, start, w.get("d", 0.0), w.get("e", 0.0), w.get("p", 1.0))
         else:
+            check_monotonic(profile, code >= 720)
             rough(out, profile, start, code, w.get("d", 0.0), w.get("i", 1.0), w.get("r", 0.5))
     except NgcSemanticError as err:  # shown at the subroutine's last line
         raise err.locate(file=file, line=line, source=source) from None
