@@ -34,7 +34,9 @@ from .offset import EPS, _shift, intersections, tangent
 from .path import Out
 from .profile import CCW, CW, LINE, Profile, Seg
 
-TANGENT = 1e-3  # the sine of a turn below which an outside corner is cut like an inside one
+# an outside corner whose turn (its sine) times the distance is below this is cut like an
+# inside one, not rounded
+ROUNDED = 0.01
 NOT_MONOTONIC = "G7X error: Not monotonic"
 PARALLEL = "G7X error: Cannot intersect parallel lines"
 
@@ -107,34 +109,58 @@ def _side(profile: Profile, entry: tuple[float, float], axis: tuple[float, float
     return -1.0 if back >= 0 else 1.0
 
 
-def _crossings(a: Seg, b: Seg) -> list[tuple[float, float]]:
-    """Where the carriers of two moved segments cross; carriers that just miss each other (a
-    corner close to tangent) meet where they come closest."""
-    points = intersections(a, b)
-    if points:
-        return points
+def _move(seg: Seg, side: float, d: float) -> Seg:
+    """``seg`` moved ``d`` to its left (``side`` +1) or right (-1); an arc keeps its centre, each
+    of its ends moving along its own radius."""
+    if seg.kind == LINE:
+        return _shift(seg, side, d)
+    r_start = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
+    r_end = math.hypot(seg.x1 - seg.cx, seg.z1 - seg.cz)
+    toward_centre = side if seg.kind == CCW else -side
+    k0 = (r_start - toward_centre * d) / r_start
+    k1 = (r_end - toward_centre * d) / r_end
+    return seg._replace(x0=seg.cx + (seg.x0 - seg.cx) * k0, z0=seg.cz + (seg.z0 - seg.cz) * k0,
+                        x1=seg.cx + (seg.x1 - seg.cx) * k1, z1=seg.cz + (seg.z1 - seg.cz) * k1)
+
+
+def _crossing(a: Seg, b: Seg) -> tuple[float, float]:
+    """Where the carriers of two moved segments, ``a`` then ``b``, meet, as rs274 picks it:
+    a line and a circle at the crossing nearer to where ``a`` ends; two circles at the crossing
+    right of the line from the first centre to the second (in the (z, x) plane).  An arc's
+    circle has the radius of its end away from the corner (the two differ a little for a
+    centre-format arc).  Carriers that miss each other (a corner close to tangent) meet where
+    they come closest."""
     if a.kind == LINE and b.kind == LINE:
-        raise NgcSemanticError(PARALLEL)
+        points = intersections(a, b)
+        if not points:
+            raise NgcSemanticError(PARALLEL)
+        return points[0]
     if a.kind == LINE or b.kind == LINE:
         line, arc = (a, b) if a.kind == LINE else (b, a)
+        # the radius at the arc's far end from the corner (what rs274 shows where the two
+        # differ, a centre-format arc within its tolerance)
+        r = math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz) if arc is b else \
+            math.hypot(arc.x0 - arc.cx, arc.z0 - arc.cz)
         dx, dz = line.x1 - line.x0, line.z1 - line.z0
-        t = ((arc.cx - line.x0) * dx + (arc.cz - line.z0) * dz) / (dx * dx + dz * dz)
-        return [(line.x0 + t * dx, line.z0 + t * dz)]
+        n2 = dx * dx + dz * dz
+        t = ((arc.cx - line.x0) * dx + (arc.cz - line.z0) * dz) / n2
+        fx, fz = line.x0 + t * dx, line.z0 + t * dz  # the foot of the centre on the line
+        h2 = r * r - ((fx - arc.cx) ** 2 + (fz - arc.cz) ** 2)
+        if h2 <= 0:
+            return fx, fz
+        h = math.sqrt(h2 / n2)
+        roots = [(fx - h * dx, fz - h * dz), (fx + h * dx, fz + h * dz)]
+        return min(roots, key=lambda pt: math.hypot(pt[0] - a.x1, pt[1] - a.z1))
     r1 = math.hypot(a.x0 - a.cx, a.z0 - a.cz)
-    dx, dz = b.cx - a.cx, b.cz - a.cz
-    n = math.hypot(dx, dz)
-    return [(a.cx + dx / n * r1, a.cz + dz / n * r1)]
-
-
-def _along(seg: Seg, pt: tuple[float, float]) -> float:
-    """How far along ``seg`` (from its start, in its direction) ``pt`` lies."""
-    x, z = pt
-    if seg.kind == LINE:
-        return (x - seg.x0) * (seg.x1 - seg.x0) + (z - seg.z0) * (seg.z1 - seg.z0)
-    a0 = math.atan2(seg.x0 - seg.cx, seg.z0 - seg.cz)
-    a = math.atan2(x - seg.cx, z - seg.cz)
-    turn = (a - a0) % (2 * math.pi) if seg.kind == CCW else (a0 - a) % (2 * math.pi)
-    return turn if turn < 1.5 * math.pi else turn - 2 * math.pi
+    r2 = math.hypot(b.x1 - b.cx, b.z1 - b.cz)
+    dz, dx = b.cz - a.cz, b.cx - a.cx
+    dist = math.hypot(dz, dx)
+    along = (dist * dist + r1 * r1 - r2 * r2) / (2 * dist)
+    mz, mx = a.cz + along * dz / dist, a.cx + along * dx / dist
+    h2 = r1 * r1 - along * along
+    h = math.sqrt(h2) if h2 > 0 else 0.0
+    # right of (dz, dx) in (z, x) is (dx, -dz)
+    return mx - h * dz / dist, mz + h * dx / dist
 
 
 def moved(profile: Profile, side: float, d: float) -> list[Seg]:
@@ -142,7 +168,7 @@ def moved(profile: Profile, side: float, d: float) -> list[Seg]:
     moves = profile[1:]
     if d == 0.0:
         return list(moves)
-    shifted = [_shift(seg, side, d) for seg in moves]
+    shifted = [_move(seg, side, d) for seg in moves]
     out: list[Seg] = []
     for i, seg in enumerate(shifted):
         if not out:
@@ -157,14 +183,14 @@ def moved(profile: Profile, side: float, d: float) -> list[Seg]:
         if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
             out.append(seg)
             continue
-        outside = turn * side * d < 0 and abs(turn) > TANGENT
-        if outside:  # the moved segments part: an arc about the corner joins them
+        if turn * side * d < 0 and abs(turn * d) >= ROUNDED:
+            # the moved segments part (an outside corner): an arc about the corner joins them
             corner = moves[i]
             out.append(Seg(CCW if turn > 0 else CW, prev.x1, prev.z1, seg.x0, seg.z0,
                            corner.x0, corner.z0, line=corner.line))
             out.append(seg)
             continue
-        px, pz = min(_crossings(prev, seg), key=lambda pt: _along(prev, pt))
+        px, pz = _crossing(prev, seg)
         out[-1] = prev._replace(x1=px, z1=pz)
         out.append(seg._replace(x0=px, z0=pz))
     return out
