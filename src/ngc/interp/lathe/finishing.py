@@ -34,8 +34,8 @@ from .offset import EPS, _shift, intersections, tangent
 from .path import Out
 from .profile import CCW, CW, LINE, Profile, Seg
 
-# an outside corner whose turn (its sine) times the distance is below this is cut like an
-# inside one, not rounded
+# an outside corner whose moved ends lie closer than this along the profile's axis is cut like
+# an inside one, not rounded
 ROUNDED = 0.01
 NOT_MONOTONIC = "G7X error: Not monotonic"
 PARALLEL = "G7X error: Cannot intersect parallel lines"
@@ -163,8 +163,9 @@ def _crossing(a: Seg, b: Seg) -> tuple[float, float]:
     return mx - h * dz / dist, mz + h * dx / dist
 
 
-def moved(profile: Profile, side: float, d: float) -> list[Seg]:
-    """The profile after ``F`` moved ``d`` to ``side``, its corners joined."""
+def moved(profile: Profile, side: float, d: float, axis: tuple[float, float]) -> list[Seg]:
+    """The profile after ``F`` moved ``d`` to ``side``, its corners joined (``axis``: the unit
+    (z, x) direction the profile goes along)."""
     moves = profile[1:]
     if d == 0.0:
         return list(moves)
@@ -183,7 +184,8 @@ def moved(profile: Profile, side: float, d: float) -> list[Seg]:
         if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
             out.append(seg)
             continue
-        if turn * side * d < 0 and abs(turn * d) >= ROUNDED:
+        gap = (seg.z0 - prev.z1) * axis[0] + (seg.x0 - prev.x1) * axis[1]
+        if turn * side * d < 0 and abs(gap) >= ROUNDED:
             # the moved segments part (an outside corner): an arc about the corner joins them
             corner = moves[i]
             out.append(Seg(CCW if turn > 0 else CW, prev.x1, prev.z1, seg.x0, seg.z0,
@@ -212,7 +214,7 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
     first = profile[0]
     for k in range(passes, 0, -1):
         dist = (k - 1) * (d - e) / p + e
-        path = moved(profile, side, dist)
+        path = moved(profile, side, dist, axis)
         out.traverse(*entry)
         if path:
             out.traverse(path[0].x0, path[0].z0)
