@@ -103,9 +103,10 @@ def _side(profile: Profile, entry: tuple[float, float], axis: tuple[float, float
     c = tz * vx - tx * vz
     if c != 0:
         return 1.0 if c > 0 else -1.0
-    # I in line (or a profile of one move): the side back against the way the profile goes
-    tz, tx = tangent(first, False)
-    back = -tx * axis[0] + tz * axis[1]  # the left normal (-tx, tz) along the axis
+    # I in line (or a profile of one move): the side where the chord from the first point to
+    # the last has its normal pointing back against the way the profile goes
+    tz, tx = last.z1 - first.z0, last.x1 - first.x0
+    back = -tx * axis[0] + tz * axis[1]  # the chord's left normal (-tx, tz) along the axis
     return -1.0 if back >= 0 else 1.0
 
 
