@@ -84,9 +84,7 @@ def cycle(m: Machine, r: Words, code: int) -> None:
         raise NgcSemanticError("G7x.x  requires a Q word")
     if st.plane != 180:
         raise NgcSemanticError(f"{_name(code)} can only be used in XZ plane (G18)")
-    if m.comp is not None:
-        if code == 700:  # rs274 runs it compensated
-            raise NgcSemanticError("G70 with cutter compensation on is not supported yet")
+    if m.comp is not None and code != 700:  # (rs274 runs G70 compensated)
         raise NgcSemanticError(f"{_name(code)} cannot be used with cutter compensation enabled")
     pos = st.pos
     target = motion.end_point(m, w, False)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ...canon import ops
+from .. import comp
 from .profile import CCW
 
 if TYPE_CHECKING:
@@ -12,7 +13,9 @@ if TYPE_CHECKING:
 
 
 class Out:
-    """Emits a cycle's moves on a machine; Y and the rotary axes stay where they are."""
+    """Emits a cycle's moves on a machine; Y and the rotary axes stay where they are.  With
+    cutter radius compensation on (G70 runs under it) the moves are compensated like programmed
+    ones, from the programmed point."""
 
     __slots__ = ("m",)
 
@@ -28,18 +31,25 @@ class Out:
         return self.m.state.pos[2]
 
     def _end(self, x: float, z: float) -> list[float]:
-        pos = self.m.state.pos
+        m = self.m
+        pos = m.state.pos if m.comp is None else m.comp.prog
         return [x, pos[1], z, pos[3], pos[4], pos[5]]
 
     def traverse(self, x: float, z: float) -> None:
         m = self.m
         end = self._end(x, z)
+        if m.comp is not None:
+            comp.straight(m, ops.StraightTraverse, end)
+            return
         m.move(ops.StraightTraverse, end, m.label, m.line)
         m.state.pos = end
 
     def feed(self, x: float, z: float) -> None:
         m = self.m
         end = self._end(x, z)
+        if m.comp is not None:
+            comp.straight(m, ops.StraightFeed, end)
+            return
         m.move(ops.StraightFeed, end, m.label, m.line)
         m.state.pos = end
 
@@ -47,6 +57,9 @@ class Out:
         """G2 (kind CW) or G3 (CCW) to (x, z) around (cx, cz) in the XZ plane."""
         m = self.m
         end = self._end(x, z)
+        if m.comp is not None:
+            comp.arc(m, end, cz, cx, 1 if kind == CCW else -1)
+            return
         m.move(ops.ArcFeed, (z, x, cz, cx, 1 if kind == CCW else -1, end[1], end[3], end[4],
                              end[5]), m.label, m.line)
         m.state.pos = end
