@@ -124,7 +124,7 @@ def _move(seg: Seg, side: float, d: float) -> Seg:
                         x1=seg.cx + (seg.x1 - seg.cx) * k1, z1=seg.cz + (seg.z1 - seg.cz) * k1)
 
 
-def _crossing(a: Seg, b: Seg) -> tuple[float, float]:
+def _crossing(a: Seg, b: Seg, mirror: float) -> tuple[float, float]:
     """Where the carriers of two moved segments, ``a`` then ``b``, meet, as rs274 picks it:
     a line and a circle at the crossing nearer to where ``a`` ends; two circles at the crossing
     right of the line from the first centre to the second (in the (z, x) plane).  An arc's
@@ -160,8 +160,19 @@ def _crossing(a: Seg, b: Seg) -> tuple[float, float]:
     mz, mx = a.cz + along * dz / dist, a.cx + along * dx / dist
     h2 = r1 * r1 - along * along
     h = math.sqrt(h2) if h2 > 0 else 0.0
-    # right of (dz, dx) in (z, x) is (dx, -dz)
+    # right of (dz, dx) in (z, x) is (dx, -dz), in rs274's frame (``mirror``)
+    h *= mirror
     return mx - h * dz / dist, mz + h * dx / dist
+
+
+def _mirror(profile: Profile, axis: tuple[float, float]) -> float:
+    """-1 where rs274's frame for the profile is a mirror image of ours: it turns Z round for a
+    profile going +Z and X round for one whose last point lies below its first."""
+    first, last = profile[0], profile[-1]
+    flip = -1.0 if axis[0] > 0 else 1.0
+    if last.x1 < first.x1:
+        flip = -flip
+    return flip
 
 
 def moved(profile: Profile, side: float, d: float, axis: tuple[float, float]) -> list[Seg]:
@@ -170,6 +181,7 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float]) ->
     moves = profile[1:]
     if d == 0.0:
         return list(moves)
+    mirror = _mirror(profile, axis)
     shifted = [_move(seg, side, d) for seg in moves]
     out: list[Seg] = []
     for i, seg in enumerate(shifted):
@@ -193,7 +205,7 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float]) ->
                            corner.x0, corner.z0, line=corner.line))
             out.append(seg)
             continue
-        px, pz = _crossing(prev, seg)
+        px, pz = _crossing(prev, seg, mirror)
         out[-1] = prev._replace(x1=px, z1=pz)
         out.append(seg._replace(x0=px, z0=pz))
     return out
