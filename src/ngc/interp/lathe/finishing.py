@@ -215,6 +215,8 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
         p: float) -> None:
     """The passes of G70 Q- D- E- P- over ``profile`` (its first segment from ``start``); the
     traverse to ``start`` is the caller's."""
+    # moves that go nowhere are left out (the approach too, when the start is the first point)
+    profile = [seg for seg in profile if (seg.x0, seg.z0) != (seg.x1, seg.z1) or seg.kind != LINE]
     if not profile:
         return
     passes = int(p)
