@@ -3,26 +3,38 @@
 What rs274 shows (program coordinates, X a radius; ``S`` the cycle's start point, ``F`` the
 profile's first point, the end of the subroutine's first move, ``L`` its last point):
 
-* The handler's traverse to ``S`` comes first (X/Z words, else the current point).
-* The profile is either *along Z* or *along X*.  Along Z, going -Z, when no move of the profile
-  after ``F`` rises in Z; along Z, going +Z, when none falls, there are at least two moves and the
-  last one rises; otherwise along X, going the way ``L`` lies from ``F`` in X (-X on a tie).
-* The entry point ``I``: a start *ahead* of ``F`` along the profile's axis (beyond F in the
-  direction the profile goes) is brought to F's level on that axis first (along Z: (S.x, F.z),
-  along X: (F.x, S.z)); otherwise ``I`` is ``S``.
-* The side the profile moves to is the side of its first move (after ``F``) that ``I`` is on; a
-  profile of one move, or ``I`` in line with that move's start, uses a fixed side: the one whose
-  normal points +Z (+X for a move along Z) for one move, the right for ``I`` in line.
-* P is truncated to an integer number of passes (P0 or less: none, only the traverse to S); pass
+* The handler's traverse to ``S`` comes first (X/Z words, else the current point).  Moves of the
+  profile that go nowhere are left out (the first move too when S is F: the next move then is
+  the approach).  A profile of the approach alone gives no pass.
+* The profile goes *along Z* when it is monotonic in Z (arcs by their extent), the way set by the
+  moves after the first: +Z if one of them rises, else -Z (so a profile rising only in its first
+  move, or of one rising move, is not along Z).  Otherwise it goes *along X* if monotonic there,
+  the way ``L`` lies from ``F`` (-X on a tie), else "G7X error: Not monotonic" (shown at the
+  subroutine's last line, after the traverse to S).
+* The entry point ``I``: a start *ahead* of ``F`` along the axis (beyond F the way the profile
+  goes) is brought to F's level on that axis first (along Z: (S.x, F.z), along X: (F.x, S.z));
+  otherwise ``I`` is ``S``.
+* The side the profile moves to is the side ``I`` lies on of the line from ``F`` to the start of
+  the last move.  With ``I`` on that line (or a profile of one move) it is the side where the
+  chord F-L has its normal pointing back against the way the profile goes (the right when that
+  normal is square to the axis).
+* P is truncated to a whole number of passes (P0 or less: none, only the traverse to S); pass
   ``k`` from P down to 1 is the profile moved (k-1)*(D-E)/P+E (P itself, not truncated, in the
-  division) to that side; a negative distance moves it the other way.  Each segment moves along
-  its normal (arcs keep their centre); an outside corner gets an arc of the distance about the
-  programmed corner, an inside corner is cut back to where the moved segments cross; two moved
-  lines in line at a corner are "G7X error: Cannot intersect parallel lines".
+  division) to that side; a negative distance moves it the other way.  Lines move along their
+  normal; an arc keeps its centre, each end moving along its own radius.
+* Corners: an inside corner is cut back to where the moved carriers cross (a line and a circle:
+  at the crossing nearer to where the first ends; two circles: at the crossing right of the line
+  from the first centre to the second in rs274's frame, which turns Z round for a profile going
+  +Z and X round for one whose last point lies below its first; an arc's circle has the radius
+  of its end away from the corner; carriers that just miss meet where they come closest).  An
+  outside corner gets an arc of the distance about the programmed corner when the moved ends
+  lie 0.01 or more apart along the profile's axis, else it is cut like an inside one.  Two
+  moved lines in line at a corner: "G7X error: Cannot intersect parallel lines".
 * Each pass: a traverse to ``I``, a traverse to the moved profile's first point, then G1/G2/G3
   feeds along it.  The tool is left at the last pass's end (the profile's end moved E); there is
   no move back.
-* With cutter radius compensation on, the cycle's moves are compensated like programmed ones.
+* With cutter radius compensation on (G41/G42 and their .1 forms) the cycle's moves are
+  compensated like programmed ones.
 """
 
 from __future__ import annotations
