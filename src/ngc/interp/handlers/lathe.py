@@ -11,8 +11,6 @@ cycle itself is shown at the subroutine's last line.
 
 from __future__ import annotations
 
-import itertools
-import math
 from typing import TYPE_CHECKING
 
 from ...errors import NgcSemanticError
@@ -20,7 +18,7 @@ from ...language import codes
 from ..lathe.corners import A_ZERO, BOTH_A_AND_C, round_corners
 from ..lathe.finishing import g70
 from ..lathe.path import Out
-from ..lathe.profile import CCW, CW, LINE, Seg
+from ..lathe.profile import CCW, CW, LINE, NOT_MONOTONIC, Seg, steps
 from ..lathe.roughing import rough
 from . import motion
 
@@ -109,34 +107,17 @@ def cycle(m: Machine, r: Words, code: int) -> None:
 
 def check_monotonic(profile: list[Seg], facing: bool) -> None:
     """The profile after its first move must not turn back along Z (G71) or X (G72)."""
+    axis = 0 if facing else 1
     direction = 0.0
     for seg in profile[1:]:
-        values = [seg.x0, seg.x1] if facing else [seg.z0, seg.z1]
-        if seg.kind != LINE:  # an arc passing its extreme on that axis turns back
-            r = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
-            centre = seg.cx if facing else seg.cz
-            for extreme in (centre - r, centre + r):
-                px, pz = (extreme, seg.cz) if facing else (seg.cx, extreme)
-                if _inside(seg, px, pz):
-                    values.insert(1, extreme)
-        for v0, v1 in itertools.pairwise(values):
-            step = v1 - v0
-            if abs(step) < 1e-12:
-                continue
-            if direction * step < 0:
-                raise NgcSemanticError("G7X error: Not monotonic")
-            direction = step
-
-
-def _inside(seg: Seg, px: float, pz: float) -> bool:
-    """Whether a point of the arc's circle lies strictly inside the arc ``seg``."""
-    def angle(x: float, z: float) -> float:
-        return math.atan2(x - seg.cx, z - seg.cz)
-    s, e, p = angle(seg.x0, seg.z0), angle(seg.x1, seg.z1), angle(px, pz)
-    turn = 2 * math.pi
-    if seg.kind == CCW:
-        return 1e-9 < (p - s) % turn < (e - s) % turn - 1e-9
-    return 1e-9 < (s - p) % turn < (s - e) % turn - 1e-9
+        step, one_way = steps(seg, axis)
+        if not one_way:  # an arc passing its extreme on that axis turns back
+            raise NgcSemanticError(NOT_MONOTONIC)
+        if abs(step) < 1e-12:
+            continue
+        if direction * step < 0:
+            raise NgcSemanticError(NOT_MONOTONIC)
+        direction = step
 
 
 def _record(m: Machine, q: float, start: tuple[float, float]

@@ -35,11 +35,9 @@ import itertools
 import math
 
 from ...errors import NgcSemanticError
-from .profile import CCW, CW, LINE, Profile, Seg
+from .profile import CCW, CW, LINE, NOT_MONOTONIC, PARALLEL, Profile, Seg
 
 BOTH_A_AND_C = "G7X error: Both A and C parameters on a corner"
-NOT_MONOTONIC = "G7X error: Not monotonic"
-PARALLEL = "G7X error: Cannot intersect parallel lines"
 A_ZERO = -0.0
 """The ``fillet`` of a move whose A word is 0: told apart from a move without A by its sign."""
 _TOUCH = 1e-9  # relative: a line or circle this near to touching a circle touches it

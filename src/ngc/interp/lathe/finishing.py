@@ -44,43 +44,16 @@ import math
 from ...errors import NgcSemanticError
 from .offset import EPS, _shift, intersections, tangent
 from .path import Out
-from .profile import CCW, CW, LINE, Profile, Seg
+from .profile import CCW, CW, LINE, NOT_MONOTONIC, PARALLEL, Profile, Seg, steps
 
 # an outside corner whose moved ends lie closer than this along the profile's axis is cut like
 # an inside one, not rounded
 ROUNDED = 0.01
-NOT_MONOTONIC = "G7X error: Not monotonic"
-PARALLEL = "G7X error: Cannot intersect parallel lines"
-
-
-def _steps(seg: Seg, axis: int) -> tuple[float, bool]:
-    """The change of ``seg`` along X (``axis`` 0) or Z (1) and whether it goes one way there
-    (an arc that turns back on that axis does not)."""
-    v0, v1 = (seg.x0, seg.x1) if axis == 0 else (seg.z0, seg.z1)
-    if seg.kind == LINE:
-        return v1 - v0, True
-    # the arc's extremes on the axis lie where its radius is parallel to the axis
-    for extreme in (0.0, math.pi) if axis == 1 else (math.pi / 2, -math.pi / 2):
-        if _within(seg, extreme):
-            return v1 - v0, False
-    return v1 - v0, True
-
-
-def _within(seg: Seg, angle: float) -> bool:
-    """Whether the direction ``angle`` (atan2(x, z) about the centre) lies strictly inside the
-    arc ``seg``."""
-    a0 = math.atan2(seg.x0 - seg.cx, seg.z0 - seg.cz)
-    a1 = math.atan2(seg.x1 - seg.cx, seg.z1 - seg.cz)
-    if seg.kind == CW:
-        a0, a1 = a1, a0
-    sweep = (a1 - a0) % (2 * math.pi)
-    at = (angle - a0) % (2 * math.pi)
-    return EPS < at < sweep - EPS
 
 
 def _monotonic(moves: list[Seg], axis: int, way: float) -> bool:
     for seg in moves:
-        step, one_way = _steps(seg, axis)
+        step, one_way = steps(seg, axis)
         if not one_way or step * way < 0:
             return False
     return True

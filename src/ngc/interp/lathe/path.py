@@ -36,30 +36,28 @@ class Out:
         return [x, pos[1], z, pos[3], pos[4], pos[5]]
 
     def traverse(self, x: float, z: float) -> None:
-        m = self.m
-        end = self._end(x, z)
-        if m.comp is not None:
-            comp.straight(m, ops.StraightTraverse, end)
-            return
-        m.move(ops.StraightTraverse, end, m.label, m.line)
-        m.state.pos = end
+        self._straight(ops.StraightTraverse, x, z)
 
     def feed(self, x: float, z: float) -> None:
+        self._straight(ops.StraightFeed, x, z)
+
+    def _straight(self, kind: type, x: float, z: float) -> None:
         m = self.m
         end = self._end(x, z)
         if m.comp is not None:
-            comp.straight(m, ops.StraightFeed, end)
+            comp.straight(m, kind, end)
             return
-        m.move(ops.StraightFeed, end, m.label, m.line)
+        m.move(kind, end, m.label, m.line)
         m.state.pos = end
 
     def arc(self, x: float, z: float, cx: float, cz: float, kind: int) -> None:
         """G2 (kind CW) or G3 (CCW) to (x, z) around (cx, cz) in the XZ plane."""
         m = self.m
         end = self._end(x, z)
+        rotation = 1 if kind == CCW else -1
         if m.comp is not None:
-            comp.arc(m, end, cz, cx, 1 if kind == CCW else -1)
+            comp.arc(m, end, cz, cx, rotation)
             return
-        m.move(ops.ArcFeed, (z, x, cz, cx, 1 if kind == CCW else -1, end[1], end[3], end[4],
-                             end[5]), m.label, m.line)
+        m.move(ops.ArcFeed, (z, x, cz, cx, rotation, end[1], end[3], end[4], end[5]), m.label,
+               m.line)
         m.state.pos = end

@@ -6,11 +6,16 @@ program's units.  The first segment starts at the cycle's start point.
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 LINE = 1
 CW = 2  # G2
 CCW = 3  # G3
+
+NOT_MONOTONIC = "G7X error: Not monotonic"
+PARALLEL = "G7X error: Cannot intersect parallel lines"
+_EPS = 1e-9
 
 
 class Seg(NamedTuple):
@@ -34,3 +39,28 @@ class Seg(NamedTuple):
 
 
 Profile = list[Seg]
+
+
+def steps(seg: Seg, axis: int) -> tuple[float, bool]:
+    """The change of ``seg`` along X (``axis`` 0) or Z (1) and whether it goes one way there
+    (an arc that turns back on that axis does not)."""
+    v0, v1 = (seg.x0, seg.x1) if axis == 0 else (seg.z0, seg.z1)
+    if seg.kind == LINE:
+        return v1 - v0, True
+    # the arc's extremes on the axis lie where its radius is parallel to the axis
+    for extreme in (0.0, math.pi) if axis == 1 else (math.pi / 2, -math.pi / 2):
+        if within(seg, extreme):
+            return v1 - v0, False
+    return v1 - v0, True
+
+
+def within(seg: Seg, angle: float) -> bool:
+    """Whether the direction ``angle`` (atan2(x, z) about the centre) lies strictly inside the
+    arc ``seg``."""
+    a0 = math.atan2(seg.x0 - seg.cx, seg.z0 - seg.cz)
+    a1 = math.atan2(seg.x1 - seg.cx, seg.z1 - seg.cz)
+    if seg.kind == CW:
+        a0, a1 = a1, a0
+    sweep = (a1 - a0) % (2 * math.pi)
+    at = (angle - a0) % (2 * math.pi)
+    return _EPS < at < sweep - _EPS
