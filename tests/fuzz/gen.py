@@ -34,6 +34,7 @@ from collections.abc import Callable
 
 import continued
 import contour
+import lathe
 import probing
 import spindlesync
 import splines
@@ -1647,6 +1648,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "probe": gen_probe,
     "state": state.gen_state,
     "continue": gen_continue,
+    "lathe": lathe.gen_lathe,
 }
 
 

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import math
 
-from .profile import CCW, CW, LINE, Seg
+from ...errors import NgcSemanticError
+from .profile import CCW, CW, LINE, PARALLEL, Seg
 
 EPS = 1e-9
 
@@ -99,9 +100,14 @@ def circle_circle(a: Seg, b: Seg) -> list[tuple[float, float]]:
 
 
 def offset(profile: list[Seg], side: float, d: float) -> list[Seg]:
-    """``profile`` moved ``d`` to its left (``side`` +1) or right (-1), corners joined."""
+    """``profile`` moved ``d`` to its left (``side`` +1) or right (-1), corners joined.  Two
+    lines in a row along the same axis are refused as rs274 refuses them."""
     if d == 0.0 or not profile:
         return list(profile)
+    for a, b in zip(profile, profile[1:]):
+        # rs274 cannot join two lines running on along X or along Z (slanted ones it can)
+        if a.kind == LINE == b.kind and (a.x0 == a.x1 == b.x1 or a.z0 == a.z1 == b.z1):
+            raise NgcSemanticError(PARALLEL)
     moved = [_shift(seg, side, d) for seg in profile]
     out: list[Seg] = []
     for i, seg in enumerate(moved):

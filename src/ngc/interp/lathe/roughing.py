@@ -29,7 +29,7 @@ import math
 
 from .offset import EPS, line_circle, offset
 from .path import Out
-from .profile import CCW, CW, LINE, Seg
+from .profile import CCW, CW, LINE, Seg, within
 
 
 class _Frame:
@@ -76,6 +76,32 @@ def _on_arc(seg: Seg, fr: _Frame, pa: float, pb: float) -> bool:
     sweep = (e - s) % (2 * math.pi) if seg.kind == CCW else (s - e) % (2 * math.pi)
     at = (p - s) % (2 * math.pi) if seg.kind == CCW else (s - p) % (2 * math.pi)
     return at <= sweep + 1e-12 or at >= 2 * math.pi - 1e-12
+
+
+def _split(profile: list[Seg], fr: _Frame) -> list[Seg]:
+    """The profile with each arc cut where it reaches an extreme on ``a`` (as rs274 walks it)."""
+    out: list[Seg] = []
+    extremes = (0.0, math.pi) if fr.swap else (math.pi / 2, -math.pi / 2)
+    for seg in profile:
+        if seg.kind == LINE:
+            out.append(seg)
+            continue
+        r = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
+        a0 = math.atan2(seg.x0 - seg.cx, seg.z0 - seg.cz)
+        cuts = []
+        for angle in extremes:
+            if within(seg, angle):
+                at = (angle - a0) % (2 * math.pi) if seg.kind == CCW else (a0 - angle) % (2 * math.pi)
+                cuts.append((at, angle))
+        for _, angle in sorted(cuts):
+            if angle in (0.0, math.pi):
+                px, pz = seg.cx, seg.cz + (r if angle == 0.0 else -r)
+            else:
+                px, pz = seg.cx + (r if angle > 0 else -r), seg.cz
+            out.append(seg._replace(x1=px, z1=pz))
+            seg = seg._replace(x0=px, z0=pz)
+        out.append(seg)
+    return out
 
 
 def _emit(out: Out, seg: Seg) -> None:
@@ -154,31 +180,71 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
             out.traverse(*fr.xz(back, entry + t * r))
             out.traverse(*fr.xz(level, entry))
             k += 1
-    else:
-        while s * (sa + s * k * inc) < s * p0a - EPS:
-            k += 1
     out.traverse(first.x0, first.z0)
-    for seg in moved:
+    walk = _split(moved, fr)
+    if variant == 1:
+        _bridged(out, fr, [*walk, closing] if chain[-1] is closing else walk, len(walk), s, t)
+        return
+    for seg in walk:
         a0 = fr.ab(seg.x0, seg.z0)[0]
         a1 = fr.ab(seg.x1, seg.z1)[0]
-        if variant != 1 and seg.kind == LINE and s * (a1 - a0) > EPS:
+        if s * (a1 - a0) > EPS:
+            # a pocket: passes at the levels the segment goes down through (G7x.2: from its
+            # top down, the others: on the start's grid)
+            k = 0
             while True:
-                level = turn * (turn * sa + turn * s * k * inc)
-                if s * level < s * a0 - EPS:
-                    k += 1
-                    continue
+                if variant == 2:
+                    level = a0 + s * k * inc
+                else:
+                    level = turn * (turn * sa + turn * s * k * inc)
+                    if s * level < s * a0 - EPS:
+                        k += 1
+                        continue
                 if s * level >= s * a1 - EPS:
                     break
                 cb = _level_hits(seg, fr, level)[0]
-                end = exit_b(level, cb)
                 out.feed(*fr.xz(level, cb))
+                end = exit_b(level, cb)
                 if end is not None:
                     out.feed(*fr.xz(level, end))
+                    r = min(retract, abs(end - cb) / 2.0)
+                    back = level - s * r
+                    out.traverse(*fr.xz(back, end - t * r))
+                    out.traverse(*fr.xz(back, cb + t * r))
                     out.feed(*fr.xz(level, cb))
                 k += 1
         _emit(out, seg)
     if chain[-1] is closing:
         _emit(out, closing)
+
+
+def _bridged(out: Out, fr: _Frame, chain: list[Seg], pockets_end: int, s: float, t: float
+             ) -> None:
+    """G7x.1's contour pass: each move is entered by a feed to its start (of no length, as rs274
+    makes it), and a pocket is bridged by a feed across its top to where the level meets the
+    profile again, the walk going on from there."""
+    i = 0
+    while i < len(chain):
+        seg = chain[i]
+        a0, b0 = fr.ab(seg.x0, seg.z0)
+        a1 = fr.ab(seg.x1, seg.z1)[0]
+        if i < pockets_end and s * (a1 - a0) > EPS:
+            exit_at = None
+            for j in range(i, len(chain)):
+                hits = [hb for hb in _level_hits(chain[j], fr, a0) if t * (hb - b0) > EPS]
+                if hits:
+                    exit_at = (j, min(hits, key=lambda hb: t * hb))
+                    break
+            if exit_at is not None:
+                j, hb = exit_at
+                x, z = fr.xz(a0, hb)
+                out.feed(x, z)
+                _emit(out, chain[j]._replace(x0=x, z0=z))
+                i = j + 1
+                continue
+        out.feed(seg.x0, seg.z0)
+        _emit(out, seg)
+        i += 1
 
 
 __all__ = ["CW", "rough"]
