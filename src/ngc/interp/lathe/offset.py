@@ -7,6 +7,7 @@ joins them; where they cross (an inside corner) both are cut back to the crossin
 
 from __future__ import annotations
 
+import itertools
 import math
 
 from ...errors import NgcSemanticError
@@ -104,7 +105,7 @@ def offset(profile: list[Seg], side: float, d: float) -> list[Seg]:
     lines in a row along the same axis are refused as rs274 refuses them."""
     if d == 0.0 or not profile:
         return list(profile)
-    for a, b in zip(profile, profile[1:]):
+    for a, b in itertools.pairwise(profile):
         # rs274 cannot join two lines running on along X or along Z (slanted ones it can)
         if a.kind == LINE == b.kind and (a.x0 == a.x1 == b.x1 or a.z0 == a.z1 == b.z1):
             raise NgcSemanticError(PARALLEL)
