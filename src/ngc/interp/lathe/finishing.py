@@ -160,12 +160,16 @@ def _mirror(profile: Profile, axis: tuple[float, float]) -> float:
     return flip
 
 
-def moved(profile: Profile, side: float, d: float, axis: tuple[float, float]) -> list[Seg]:
+def moved(profile: Profile, side: float, d: float, axis: tuple[float, float],
+          gap_axis: tuple[float, float] | None = None) -> list[Seg]:
     """The profile after ``F`` moved ``d`` to ``side``, its corners joined (``axis``: the unit
-    (z, x) direction the profile goes along)."""
+    (z, x) direction the profile goes along).  ``gap_axis`` is the axis an outside corner's gap
+    is measured along (``axis`` unless given: G71 and G72 measure it along Z); with it given,
+    two slanted lines in line join (as G71/G72 join them; G70 refuses them)."""
     moves = profile[1:]
     if d == 0.0:
         return list(moves)
+    gz, gx = axis if gap_axis is None else gap_axis
     mirror = _mirror(profile, axis)
     shifted = [_move(seg, side, d) for seg in moves]
     out: list[Seg] = []
@@ -177,12 +181,12 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float]) ->
         t1 = tangent(moves[i - 1], True)
         t2 = tangent(moves[i], False)
         turn = t1[0] * t2[1] - t1[1] * t2[0]  # > 0: turning left
-        if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS:
+        if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS and gap_axis is None:
             raise NgcSemanticError(PARALLEL)
         if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
             out.append(seg)
             continue
-        gap = (seg.z0 - prev.z1) * axis[0] + (seg.x0 - prev.x1) * axis[1]
+        gap = (seg.z0 - prev.z1) * gz + (seg.x0 - prev.x1) * gx
         if turn * side * d < 0 and abs(gap) >= ROUNDED:
             # the moved segments part (an outside corner): an arc about the corner joins them
             corner = moves[i]
@@ -190,7 +194,17 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float]) ->
                            corner.x0, corner.z0, line=corner.line))
             out.append(seg)
             continue
+        if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS:
+            out.append(seg)  # (slanted lines in line, joined as G71/G72 join them)
+            continue
         px, pz = _crossing(prev, seg, mirror)
+        if (gap_axis is not None and prev.kind == LINE and len(out) > 1
+                and (px - prev.x0) * (prev.x1 - prev.x0) + (pz - prev.z0) * (prev.z1 - prev.z0) < 0):
+            # a line shorter than the distance turns round between its corners: G71/G72 leave
+            # it out, the lines on either side meeting where their carriers cross
+            out.pop()
+            prev = out[-1]
+            px, pz = _crossing(prev, seg, mirror)
         out[-1] = prev._replace(x1=px, z1=pz)
         out.append(seg._replace(x0=px, z0=pz))
     return out

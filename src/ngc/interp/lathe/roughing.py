@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 
+from .finishing import moved as moved_by
 from .offset import EPS, line_circle, offset
 from .path import Out
 from .profile import CCW, CW, LINE, Seg, within
@@ -143,12 +144,14 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         start = fr.xz(sa, sb)
     # Left or right of the profile's direction in (z, x) is toward the start.
     side = -s * t if not fr.swap else s * t
-    moved = offset(rest, side, d)
+    offset(rest, side, d)  # (its checks)
+    way = (t, 0.0) if not fr.swap else (0.0, t)
+    moved = moved_by(profile, side, d, way, (1.0, 0.0))
     first, last = moved[0], moved[-1]
     p0a = fr.ab(first.x0, first.z0)[0]
     la, lb = fr.ab(last.x1, last.z1)
     closing = Seg(LINE, last.x1, last.z1, *fr.xz(sa, lb))
-    chain = [*moved, closing] if s * la < s * sa or s * la > s * sa else list(moved)
+    chain = [*moved, closing] if s * la > s * sa else list(moved)  # (E beyond the start: none)
     approach_line = Seg(LINE, start[0], start[1], first.x0, first.z0)
 
     def exit_b(level: float, from_b: float) -> float | None:
@@ -185,16 +188,24 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     if variant == 1:
         _bridged(out, fr, [*walk, closing] if chain[-1] is closing else walk, len(walk), s, t)
         return
+    top: float | None = None  # where the pocket being walked down began
     for seg in walk:
         a0 = fr.ab(seg.x0, seg.z0)[0]
         a1 = fr.ab(seg.x1, seg.z1)[0]
-        if s * (a1 - a0) > EPS:
-            # a pocket: passes at the levels the segment goes down through (G7x.2: from its
-            # top down, the others: on the start's grid)
+        if s * (a1 - a0) < -EPS:
+            top = None
+        elif s * (a1 - a0) > EPS:
+            # a pocket: passes at the levels the segment goes down through (G7x.2: from the
+            # pocket's top down, the others: on the start's grid)
+            if top is None:
+                top = a0
             k = 0
             while True:
                 if variant == 2:
-                    level = a0 + s * k * inc
+                    level = top + s * k * inc
+                    if s * level < s * a0 - EPS:
+                        k += 1
+                        continue
                 else:
                     level = turn * (turn * sa + turn * s * k * inc)
                     if s * level < s * a0 - EPS:
