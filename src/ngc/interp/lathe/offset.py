@@ -1,9 +1,5 @@
-"""A profile moved a distance toward the side being cut: the material G71/G72 leave for finishing.
-
-Each segment moves along its normal toward that side (arcs change radius about the same centre);
-where two moved segments leave a gap (an outside corner) an arc of the distance about the corner
-joins them; where they cross (an inside corner) both are cut back to the crossing.
-"""
+"""Geometry for moving a lathe profile by a distance (``finishing.moved`` joins the moved
+segments): a segment moved along its normal, tangents, and where carriers cross."""
 
 from __future__ import annotations
 
@@ -11,7 +7,7 @@ import itertools
 import math
 
 from ...errors import NgcSemanticError
-from .profile import CCW, CW, LINE, PARALLEL, Seg
+from .profile import CCW, LINE, PARALLEL, Seg
 
 EPS = 1e-9
 
@@ -100,39 +96,9 @@ def circle_circle(a: Seg, b: Seg) -> list[tuple[float, float]]:
     return [(mx - h * dz / d, mz + h * dx / d), (mx + h * dz / d, mz - h * dx / d)]
 
 
-def offset(profile: list[Seg], side: float, d: float) -> list[Seg]:
-    """``profile`` moved ``d`` to its left (``side`` +1) or right (-1), corners joined.  Two
-    lines in a row along the same axis are refused as rs274 refuses them."""
-    if d == 0.0 or not profile:
-        return list(profile)
+def check_joinable(profile: list[Seg]) -> None:
+    """G71/G72 with a D: rs274 cannot join two lines in a row that run along X, or along Z
+    (slanted lines in line it joins)."""
     for a, b in itertools.pairwise(profile):
-        # rs274 cannot join two lines running on along X or along Z (slanted ones it can)
         if a.kind == LINE == b.kind and (a.x0 == a.x1 == b.x1 or a.z0 == a.z1 == b.z1):
             raise NgcSemanticError(PARALLEL)
-    moved = [_shift(seg, side, d) for seg in profile]
-    out: list[Seg] = []
-    for i, seg in enumerate(moved):
-        if not out:
-            out.append(seg)
-            continue
-        prev = out[-1]
-        if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
-            out.append(seg)
-            continue
-        t1 = tangent(profile[i - 1], True)
-        t2 = tangent(profile[i], False)
-        turn = t1[0] * t2[1] - t1[1] * t2[0]  # > 0: turning left
-        if turn * side < 0:  # turning away from the moved side: an outside corner
-            corner = profile[i]
-            out.append(Seg(CCW if side < 0 else CW, prev.x1, prev.z1, seg.x0, seg.z0,
-                           corner.x0, corner.z0, line=corner.line))
-            out.append(seg)
-            continue
-        points = intersections(prev, seg)
-        if not points:
-            out.append(seg)
-            continue
-        px, pz = min(points, key=lambda p: math.hypot(p[0] - prev.x1, p[1] - prev.z1))
-        out[-1] = prev._replace(x1=px, z1=pz)
-        out.append(seg._replace(x0=px, z0=pz))
-    return out

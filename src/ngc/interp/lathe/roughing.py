@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 
 from .finishing import moved as moved_by
-from .offset import EPS, line_circle, offset
+from .offset import EPS, check_joinable, line_circle
 from .path import Out
 from .profile import CCW, CW, LINE, Seg, within
 
@@ -131,6 +131,8 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     eb = fr.ab(rest[-1].x1, rest[-1].z1)[1]
     t = 1.0 if eb >= sb else -1.0
     turn = -s  # how rs274's frame has the step axis (see the levels)
+    if d:
+        check_joinable(rest)
     far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
     if far <= s * sa:  # nothing beyond the start: the profile as programmed
         out.traverse(*start)
@@ -144,14 +146,13 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         start = fr.xz(sa, sb)
     # Left or right of the profile's direction in (z, x) is toward the start.
     side = -s * t if not fr.swap else s * t
-    offset(rest, side, d)  # (its checks)
     way = (t, 0.0) if not fr.swap else (0.0, t)
     moved = moved_by(profile, side, d, way, (1.0, 0.0))
     first, last = moved[0], moved[-1]
     p0a = fr.ab(first.x0, first.z0)[0]
     la, lb = fr.ab(last.x1, last.z1)
     closing = Seg(LINE, last.x1, last.z1, *fr.xz(sa, lb))
-    chain = [*moved, closing] if s * la > s * sa else list(moved)  # (E beyond the start: none)
+    chain = [*moved, closing] if s * la >= s * sa else list(moved)  # (E beyond the start: none)
     approach_line = Seg(LINE, start[0], start[1], first.x0, first.z0)
 
     def exit_b(level: float, from_b: float) -> float | None:
