@@ -152,7 +152,10 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     p0a = fr.ab(first.x0, first.z0)[0]
     la, lb = fr.ab(last.x1, last.z1)
     closing = Seg(LINE, last.x1, last.z1, *fr.xz(sa, lb))
-    chain = [*moved, closing] if s * la >= s * sa else list(moved)  # (E beyond the start: none)
+    # a closing feed unless E lies beyond the start's level (G71: or on it; G72 closes from there,
+    # with a feed of no length)
+    closes = s * la >= s * sa if fr.swap else s * la > s * sa
+    chain = [*moved, closing] if closes else list(moved)
     approach_line = Seg(LINE, start[0], start[1], first.x0, first.z0)
 
     def exit_b(level: float, from_b: float) -> float | None:
