@@ -56,6 +56,9 @@ INPROC = "inproc"
 PROGRAM_NAME = "prog.ngc"
 
 
+HUNG = "<timed out after {:g}s>"
+
+
 @dataclass
 class Outcome:
     """One side's run: normalized stdout lines, stderr lines (without ``executing``), exit code."""
@@ -65,6 +68,7 @@ class Outcome:
     rc: int
     raw_out: str = ""
     raw_err: str = ""
+    timeout: float = 0.0
 
     def same(self, other: Outcome) -> bool:
         return self.out == other.out and self.err == other.err and self.rc == other.rc
@@ -81,8 +85,13 @@ class Result:
     signature: tuple[str, ...] = field(default_factory=tuple)
 
     @property
+    def hung(self) -> bool:
+        """rs274 never finished (its G71/G72 can loop for ever): nothing to compare with."""
+        return self.ref.rc == -1 and self.ref.err[:1] == [HUNG.format(self.ref.timeout)]
+
+    @property
     def differs(self) -> bool:
-        return not self.ref.same(self.ngc)
+        return not self.hung and not self.ref.same(self.ngc)
 
 
 @contextlib.contextmanager
@@ -117,7 +126,7 @@ def run_command(cmd: list[str], text: str, timeout: float) -> Outcome:
             proc = subprocess.run([*cmd, *arguments(text)], cwd=work, env=child_env(home),
                                   stdin=subprocess.DEVNULL, capture_output=True, timeout=timeout)
         except subprocess.TimeoutExpired:
-            return Outcome([], [f"<timed out after {timeout:g}s>"], -1)
+            return Outcome([], [HUNG.format(timeout)], -1, timeout=timeout)
     return outcome(proc.stdout.decode("latin-1"), proc.stderr.decode("latin-1"), proc.returncode)
 
 
@@ -304,13 +313,15 @@ def _collect(it: Iterator[Result], total: int, start: float, progress: bool) -> 
 
 def summarize(results: list[Result], kinds: list[str]) -> dict[tuple[str, ...], list[Result]]:
     """Print the per-kind table and the classes of difference; returns the classes."""
-    print(f"{'kind':10} {'run':>5} {'same':>5} {'differ':>6} {'rs274 ok':>9}")
+    print(f"{'kind':10} {'run':>5} {'same':>5} {'differ':>6} {'rs274 ok':>9} {'rs274 hung':>10}")
     for kind in kinds:
         rs = [r for r in results if r.kind == kind]
-        same = sum(not r.differs for r in rs)
+        hung = sum(r.hung for r in rs)
+        same = sum(not r.differs and not r.hung for r in rs)
         ok = sum(r.ref.rc == 0 for r in rs)
         pct = 100 * ok / len(rs) if rs else 0
-        print(f"{kind:10} {len(rs):5} {same:5} {len(rs) - same:6} {ok:5} ({pct:.0f}%)")
+        print(f"{kind:10} {len(rs):5} {same:5} {len(rs) - same - hung:6} {ok:5} ({pct:.0f}%)"
+              f" {hung:10}")
     classes: dict[tuple[str, ...], list[Result]] = {}
     for r in results:
         if r.differs:
