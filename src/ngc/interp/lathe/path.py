@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from ...canon import ops
@@ -17,10 +18,12 @@ class Out:
     cutter radius compensation on (G70 runs under it) the moves are compensated like programmed
     ones, from the programmed point."""
 
-    __slots__ = ("m",)
+    __slots__ = ("m", "zeros")
 
     def __init__(self, m: Machine) -> None:
         self.m = m
+        # the sign rs274 gives a coordinate of 0 of the cycle: (x, z) -> (x, z)
+        self.zeros: Callable[[float, float], tuple[float, float]] | None = None
 
     @property
     def x(self) -> float:
@@ -43,6 +46,8 @@ class Out:
 
     def _straight(self, kind: type, x: float, z: float) -> None:
         m = self.m
+        if self.zeros is not None:
+            x, z = self.zeros(x, z)
         end = self._end(x, z)
         if m.comp is not None:
             comp.straight(m, kind, end)
@@ -53,6 +58,9 @@ class Out:
     def arc(self, x: float, z: float, cx: float, cz: float, kind: int) -> None:
         """G2 (kind CW) or G3 (CCW) to (x, z) around (cx, cz) in the XZ plane."""
         m = self.m
+        if self.zeros is not None:
+            x, z = self.zeros(x, z)
+            cx, cz = self.zeros(cx, cz)
         end = self._end(x, z)
         rotation = 1 if kind == CCW else -1
         if m.comp is not None:

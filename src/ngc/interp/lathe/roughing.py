@@ -26,6 +26,7 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 from .finishing import moved as moved_by
 from .offset import EPS, check_joinable, line_circle
@@ -77,6 +78,18 @@ def _on_arc(seg: Seg, fr: _Frame, pa: float, pb: float) -> bool:
     sweep = (e - s) % (2 * math.pi) if seg.kind == CCW else (s - e) % (2 * math.pi)
     at = (p - s) % (2 * math.pi) if seg.kind == CCW else (s - p) % (2 * math.pi)
     return at <= sweep + 1e-12 or at >= 2 * math.pi - 1e-12
+
+
+def _turning_zeros(flip_x: bool, flip_z: bool) -> Callable[[float, float], tuple[float, float]]:
+    """G71's signs of zero: rs274 turns an axis round in its frame when the passes step up X or
+    cut toward +Z, and a coordinate of 0 comes back from such an axis as -0."""
+    def zeros(x: float, z: float) -> tuple[float, float]:
+        if flip_x and x == 0.0:
+            x = -0.0
+        if flip_z and z == 0.0:
+            z = -0.0
+        return x, z
+    return zeros
 
 
 def _split(profile: list[Seg], fr: _Frame) -> list[Seg]:
@@ -131,6 +144,8 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     eb = fr.ab(rest[-1].x1, rest[-1].z1)[1]
     t = 1.0 if eb >= sb else -1.0
     turn = -s  # how rs274's frame has the step axis (see the levels)
+    if not fr.swap:
+        out.zeros = _turning_zeros(s > 0, t > 0)
     if d:
         check_joinable(rest)
     far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
