@@ -192,9 +192,10 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
             hits = _level_hits(approach_line, fr, level)
             entry = hits[0] if hits else sb
             end = exit_b(level, entry)
-            if end is None:
-                break
             out.traverse(*fr.xz(level, entry))
+            if end is None:  # nothing to cut at this level: on to the next
+                k += 1
+                continue
             out.feed(*fr.xz(level, end))
             r = min(retract, abs(end - entry) / 2.0)  # at most back to the middle of the pass
             back = turn * (up - turn * s * r)
