@@ -92,6 +92,14 @@ def _turning_zeros(flip_x: bool, flip_z: bool) -> Callable[[float, float], tuple
     return zeros
 
 
+def _facing_zeros(x: float, z: float) -> tuple[float, float]:
+    """G72's signs of zero, cutting toward -X: rs274's frame is turned a quarter round there, and
+    a Z of 0 comes back as -0 where X is positive (as +0 where it is not)."""
+    if z == 0.0:
+        z = -0.0 if x > 0.0 else 0.0
+    return x, z
+
+
 def _split(profile: list[Seg], fr: _Frame) -> list[Seg]:
     """The profile with each arc cut where it reaches an extreme on ``a`` (as rs274 walks it)."""
     out: list[Seg] = []
@@ -146,6 +154,8 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     turn = -s  # how rs274's frame has the step axis (see the levels)
     if not fr.swap:
         out.zeros = _turning_zeros(s > 0, t > 0)
+    elif t < 0:
+        out.zeros = _facing_zeros
     if d:
         check_joinable(rest)
     far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
