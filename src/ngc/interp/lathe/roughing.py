@@ -92,12 +92,18 @@ def _turning_zeros(flip_x: bool, flip_z: bool) -> Callable[[float, float], tuple
     return zeros
 
 
-def _facing_zeros(x: float, z: float) -> tuple[float, float]:
-    """G72's signs of zero, cutting toward -X: rs274's frame is turned a quarter round there, and
-    a Z of 0 comes back as -0 where X is positive (as +0 where it is not)."""
-    if z == 0.0:
-        z = -0.0 if x > 0.0 else 0.0
-    return x, z
+def _facing_zeros(x_round: bool, z_by_x: bool) -> Callable[[float, float], tuple[float, float]]:
+    """G72's signs of zero: rs274's frame is turned a quarter round, and what comes back as 0
+    takes its sign from that turn.  Cutting toward +X an X of 0 prints -0; where the passes step
+    the way the cut goes round (down Z cutting toward -X, up Z toward +X) a Z of 0 prints -0
+    where X is positive, +0 where it is not."""
+    def zeros(x: float, z: float) -> tuple[float, float]:
+        if x_round and x == 0.0:
+            x = -0.0
+        if z_by_x and z == 0.0:
+            z = -0.0 if x > 0.0 else 0.0
+        return x, z
+    return zeros
 
 
 def _split(profile: list[Seg], fr: _Frame) -> list[Seg]:
@@ -154,21 +160,21 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     turn = -s  # how rs274's frame has the step axis (see the levels)
     if not fr.swap:
         out.zeros = _turning_zeros(s > 0, t > 0)
-    elif t < 0:
-        out.zeros = _facing_zeros
+    else:
+        out.zeros = _facing_zeros(t > 0, s * t > 0)
     if d:
         check_joinable(rest)
+    # A start ahead of the profile's first point along the cut starts from that point's b.
+    fb = fr.ab(approach.x1, approach.z1)[1]
+    if t * (sb - fb) > 0:
+        sb = fb
+        start = fr.xz(sa, sb)
     far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
     if far <= s * sa:  # nothing beyond the start: the profile as programmed
         out.traverse(*start)
         for seg in profile:
             _emit(out, seg)
         return
-    # A start ahead of the profile's first point along the cut starts from that point's b.
-    fb = fr.ab(approach.x1, approach.z1)[1]
-    if t * (sb - fb) > 0:
-        sb = fb
-        start = fr.xz(sa, sb)
     # Left or right of the profile's direction in (z, x) is toward the start.
     side = -s * t if not fr.swap else s * t
     way = (t, 0.0) if not fr.swap else (0.0, t)
