@@ -5,22 +5,26 @@ The cycle works in a frame of two axes: ``a``, the axis the passes step along (X
 G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
 
 * The profile's first move, from the start point, is the approach; the rest is moved ``D`` toward
-  the start (``offset``).  ``P0`` is the moved profile's first point, ``E`` its last.
+  the start as G70 moves it (``finishing.moved``; with a D, two lines in a row along X or along Z
+  are refused first).  ``P0`` is the moved profile's first point, ``E`` its last.
 * A start ahead of the profile's first point along ``b`` (in the direction of the cut) is moved
   back to that point's ``b``.
 * The passes step from the start toward ``P0``: away from ``E`` on ``a`` (G71: toward larger X when
   E is below P0, else smaller; G72 the same on Z, a tie counting the other way).  If the profile
   lies nowhere beyond the start that way there is nothing to rough: the tool feeds along the
   profile as programmed, approach included.
-* Each level ``start + k*I`` before P0: a traverse to where the level meets the approach, a feed
-  along ``b`` to the first point where it meets the profile (or the closing line from E back to
-  the start's level), a traverse back R on both axes, a traverse to R past the entry, and a
-  traverse to the entry (R at most half the pass: a short pass retracts to its middle).  The
-  levels are counted in a frame of rs274's where the step axis is turned round when they rise: a
-  level at 0 reached upward is -0 (rs274's other signs of zero are not all followed yet).
-* Then a traverse to P0 and a feed along the moved profile; where it goes deeper, at each level it
-  reaches (from its start, not at its end) it feeds across the pocket to the profile's far side
-  and back.  A last feed closes back to the start's level at E.
+* Each level ``start + k*I`` before P0: a traverse to where the level meets the approach, then (if
+  the level meets the profile, or the closing line from E back to the start's level) a feed along
+  ``b`` to the first such point, a traverse back R on both axes, a traverse to R past the entry,
+  and a traverse to the entry (R at most half the pass: a short pass retracts to its middle).
+* Then a traverse to P0 and a feed along the moved profile, its arcs cut where they reach an
+  extreme on ``a``.  Where it goes deeper (a pocket), each level of the start's grid it goes down
+  through (G7x.2: each level from the pocket's top) is cut: a feed to the level, across to the
+  profile's far side, a retract of R on both axes, a traverse back and a feed to the entry.
+  G7x.1 instead enters every move with a feed (of no length) to its start and bridges a pocket by
+  a feed across its top.  A last feed closes back to the start's level at E unless E lies beyond
+  it (G71: or on it).
+* Zeros print with the sign rs274's frame gives them (``_turning_zeros``, ``_facing_zeros``).
 """
 
 from __future__ import annotations
