@@ -160,16 +160,17 @@ def _mirror(profile: Profile, axis: tuple[float, float]) -> float:
     return flip
 
 
-def moved(profile: Profile, side: float, d: float, axis: tuple[float, float],
-          gap_axis: tuple[float, float] | None = None) -> list[Seg]:
+def moved(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
+          roughing: bool = False) -> list[Seg]:
     """The profile after ``F`` moved ``d`` to ``side``, its corners joined (``axis``: the unit
-    (z, x) direction the profile goes along).  ``gap_axis`` is the axis an outside corner's gap
-    is measured along (``axis`` unless given: G71 and G72 measure it along Z); with it given,
-    two slanted lines in line join (as G71/G72 join them; G70 refuses them)."""
+    (z, x) direction the profile goes along).  G70 measures an outside corner's gap along
+    ``axis`` and refuses two moved lines in line; for G71/G72 (``roughing``) the gap is measured
+    along Z, slanted lines in line join, and a line shorter than ``d`` that turns round between
+    its corners is left out."""
     moves = profile[1:]
     if d == 0.0:
         return list(moves)
-    gz, gx = axis if gap_axis is None else gap_axis
+    gz, gx = (1.0, 0.0) if roughing else axis
     mirror = _mirror(profile, axis)
     shifted = [_move(seg, side, d) for seg in moves]
     out: list[Seg] = []
@@ -181,7 +182,7 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float],
         t1 = tangent(moves[i - 1], True)
         t2 = tangent(moves[i], False)
         turn = t1[0] * t2[1] - t1[1] * t2[0]  # > 0: turning left
-        if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS and gap_axis is None:
+        if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS and not roughing:
             raise NgcSemanticError(PARALLEL)
         if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
             out.append(seg)
@@ -198,7 +199,7 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float],
             out.append(seg)  # (slanted lines in line, joined as G71/G72 join them)
             continue
         px, pz = _crossing(prev, seg, mirror)
-        if (gap_axis is not None and prev.kind == LINE and len(out) > 1
+        if (roughing and prev.kind == LINE and len(out) > 1
                 and (px - prev.x0) * (prev.x1 - prev.x0) + (pz - prev.z0) * (prev.z1 - prev.z0) < 0):
             # a line shorter than the distance turns round between its corners: G71/G72 leave
             # it out, the lines on either side meeting where their carriers cross

@@ -182,7 +182,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     # Left or right of the profile's direction in (z, x) is toward the start.
     side = -s * t if not fr.swap else s * t
     way = (t, 0.0) if not fr.swap else (0.0, t)
-    moved = moved_by(profile, side, d, way, (1.0, 0.0))
+    moved = moved_by(profile, side, d, way, roughing=True)
     first, last = moved[0], moved[-1]
     p0a = fr.ab(first.x0, first.z0)[0]
     la, lb = fr.ab(last.x1, last.z1)
@@ -201,11 +201,16 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                     best = hb
         return best
 
+    def turned(k: int) -> float:
+        """Level ``k`` of the start's grid in rs274's turned frame (its zeros keep their sign
+        there): the level itself is ``turn`` times it."""
+        return turn * sa + turn * s * k * inc
+
     out.traverse(*start)
     k = 0
     if variant != 2:
         while True:
-            up = turn * sa + turn * s * k * inc  # in rs274's turned frame (zeros keep its sign)
+            up = turned(k)
             level = turn * up
             if s * level >= s * p0a - EPS:
                 break
@@ -226,7 +231,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     out.traverse(first.x0, first.z0)
     walk = _split(moved, fr)
     if variant == 1:
-        _bridged(out, fr, [*walk, closing] if chain[-1] is closing else walk, len(walk), s, t)
+        _bridged(out, fr, [*walk, closing] if closes else walk, len(walk), s, t)
         return
     top: float | None = None  # where the pocket being walked down began
     for seg in walk:
@@ -241,16 +246,10 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                 top = a0
             k = 0
             while True:
-                if variant == 2:
-                    level = top + s * k * inc
-                    if s * level < s * a0 - EPS:
-                        k += 1
-                        continue
-                else:
-                    level = turn * (turn * sa + turn * s * k * inc)
-                    if s * level < s * a0 - EPS:
-                        k += 1
-                        continue
+                level = top + s * k * inc if variant == 2 else turn * turned(k)
+                if s * level < s * a0 - EPS:
+                    k += 1
+                    continue
                 if s * level >= s * a1 - EPS:
                     break
                 cb = _level_hits(seg, fr, level)[0]
@@ -265,7 +264,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                     out.feed(*fr.xz(level, cb))
                 k += 1
         _emit(out, seg)
-    if chain[-1] is closing:
+    if closes:
         _emit(out, closing)
 
 
