@@ -56,9 +56,6 @@ INPROC = "inproc"
 PROGRAM_NAME = "prog.ngc"
 
 
-HUNG = "<timed out after {:g}s>"
-
-
 @dataclass
 class Outcome:
     """One side's run: normalized stdout lines, stderr lines (without ``executing``), exit code."""
@@ -68,7 +65,7 @@ class Outcome:
     rc: int
     raw_out: str = ""
     raw_err: str = ""
-    timeout: float = 0.0
+    timed_out: bool = False
 
     def same(self, other: Outcome) -> bool:
         return self.out == other.out and self.err == other.err and self.rc == other.rc
@@ -87,7 +84,7 @@ class Result:
     @property
     def hung(self) -> bool:
         """rs274 never finished (its G71/G72 can loop for ever): nothing to compare with."""
-        return self.ref.rc == -1 and self.ref.err[:1] == [HUNG.format(self.ref.timeout)]
+        return self.ref.timed_out
 
     @property
     def differs(self) -> bool:
@@ -126,7 +123,7 @@ def run_command(cmd: list[str], text: str, timeout: float) -> Outcome:
             proc = subprocess.run([*cmd, *arguments(text)], cwd=work, env=child_env(home),
                                   stdin=subprocess.DEVNULL, capture_output=True, timeout=timeout)
         except subprocess.TimeoutExpired:
-            return Outcome([], [HUNG.format(timeout)], -1, timeout=timeout)
+            return Outcome([], [f"<timed out after {timeout:g}s>"], -1, timed_out=True)
     return outcome(proc.stdout.decode("latin-1"), proc.stderr.decode("latin-1"), proc.returncode)
 
 
