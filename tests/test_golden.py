@@ -27,9 +27,6 @@ KNOWN: dict[str, str] = {
     "expr-known-tan-271-last-place": "TAN[271]: the C library's tanl is 1.08 long double units "
     "off there, and the double rounding shows it; ngc's exact long double tangent rounds the "
     "other way (one case in about 5000)",
-    "lathe-rough-corner-gap-0.05": "G71.1 with D: where the arc rounding an outside corner starts "
-    "at its highest X and goes down into a pocket, rs274 feeds once more to the arc's start before "
-    "it bridges the pocket (and G71.2 makes no entry feed there); its rule is not known yet",
     "nurbs-comp-on": "ngc refuses a G5.2 block while cutter compensation is on; rs274 runs it, "
     "dropping the move compensation holds, and offsets the next moves in a way not known yet",
 }

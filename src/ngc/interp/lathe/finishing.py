@@ -167,9 +167,16 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
     ``axis`` and refuses two moved lines in line; for G71/G72 (``roughing``) the gap is measured
     along Z, slanted lines in line join, and a line shorter than ``d`` that turns round between
     its corners is left out."""
+    return moved_with_corners(profile, side, d, axis, roughing=roughing)[0]
+
+
+def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
+                       roughing: bool = False) -> tuple[list[Seg], set[int]]:
+    """``moved``, and the indices of the arcs it put in to round outside corners."""
     moves = profile[1:]
+    corners: set[int] = set()
     if d == 0.0:
-        return list(moves)
+        return list(moves), corners
     gz, gx = (1.0, 0.0) if roughing else axis
     mirror = _mirror(profile, axis)
     shifted = [_move(seg, side, d) for seg in moves]
@@ -191,6 +198,7 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
         if turn * side * d < 0 and abs(gap) >= ROUNDED:
             # the moved segments part (an outside corner): an arc about the corner joins them
             corner = moves[i]
+            corners.add(len(out))
             out.append(Seg(CCW if turn > 0 else CW, prev.x1, prev.z1, seg.x0, seg.z0,
                            corner.x0, corner.z0, line=corner.line))
             out.append(seg)
@@ -203,12 +211,13 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
                 and (px - prev.x0) * (prev.x1 - prev.x0) + (pz - prev.z0) * (prev.z1 - prev.z0) < 0):
             # a line shorter than the distance turns round between its corners: G71/G72 leave
             # it out, the lines on either side meeting where their carriers cross
+            corners.discard(len(out) - 1)
             out.pop()
             prev = out[-1]
             px, pz = _crossing(prev, seg, mirror)
         out[-1] = prev._replace(x1=px, z1=pz)
         out.append(seg._replace(x0=px, z0=pz))
-    return out
+    return out, corners
 
 
 def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: float,

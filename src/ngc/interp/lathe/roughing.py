@@ -32,7 +32,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from .finishing import moved as moved_by
+from .finishing import moved_with_corners
 from .offset import EPS, check_joinable, line_circle
 from .path import Out
 from .profile import CCW, CW, LINE, Seg, within
@@ -110,30 +110,54 @@ def _facing_zeros(x_round: bool, z_by_x: bool) -> Callable[[float, float], tuple
     return zeros
 
 
-def _split(profile: list[Seg], fr: _Frame) -> list[Seg]:
-    """The profile with each arc cut where it reaches an extreme on ``a`` (as rs274 walks it)."""
+MOVE, CORNER, CONT = 0, 1, 2  # a piece of the walk: a move, an arc rounding a corner, the
+# rest of an arc cut where it turns
+
+
+def _split(profile: list[Seg], corners: set[int], fr: _Frame, s: float
+           ) -> tuple[list[Seg], list[int]]:
+    """The moved profile with each arc cut where it turns from climbing to going deeper (its
+    extreme least far along ``s`` on ``a``), as rs274 walks it; and what each piece is (MOVE,
+    CORNER: an arc ``moved`` put in at an outside corner, CONT: the rest of a cut arc)."""
     out: list[Seg] = []
-    extremes = (0.0, math.pi) if fr.swap else (math.pi / 2, -math.pi / 2)
-    for seg in profile:
-        if seg.kind == LINE:
-            out.append(seg)
-            continue
-        r = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
-        a0 = math.atan2(seg.x0 - seg.cx, seg.z0 - seg.cz)
-        cuts = []
-        for angle in extremes:
-            if within(seg, angle):
-                at = (angle - a0) % (2 * math.pi) if seg.kind == CCW else (a0 - angle) % (2 * math.pi)
-                cuts.append((at, angle))
-        for _, angle in sorted(cuts):
-            if angle in (0.0, math.pi):
-                px, pz = seg.cx, seg.cz + (r if angle == 0.0 else -r)
-            else:
-                px, pz = seg.cx + (r if angle > 0 else -r), seg.cz
-            out.append(seg._replace(x1=px, z1=pz))
-            seg = seg._replace(x0=px, z0=pz)
+    tags: list[int] = []
+    top = _extreme(fr, -s)
+    for i, seg in enumerate(profile):
         out.append(seg)
-    return out
+        tags.append(CORNER if i in corners else MOVE)
+        if seg.kind == LINE or not within(seg, top):
+            continue
+        px, pz = _extreme_point(seg, fr, -s)
+        out[-1] = seg._replace(x1=px, z1=pz)
+        out.append(seg._replace(x0=px, z0=pz))
+        tags.append(CONT)
+    return out, tags
+
+
+def _depth(seg: Seg, fr: _Frame, s: float) -> tuple[Seg, float]:
+    """The part of ``seg`` going deeper (along ``s`` on ``a``) from its start, and the ``a`` it
+    goes down to (its start's when it climbs)."""
+    a0 = fr.ab(seg.x0, seg.z0)[0]
+    a1 = fr.ab(seg.x1, seg.z1)[0]
+    if seg.kind != LINE and within(seg, _extreme(fr, s)):
+        bx, bz = _extreme_point(seg, fr, s)
+        return seg._replace(x1=bx, z1=bz), fr.ab(bx, bz)[0]
+    return seg, a1 if s * (a1 - a0) > 0 else a0
+
+
+def _extreme(fr: _Frame, way: float) -> float:
+    """The direction about an arc's centre (atan2(x, z)) of its extreme toward ``way`` on ``a``."""
+    if fr.swap:
+        return 0.0 if way > 0 else math.pi
+    return math.pi / 2 if way > 0 else -math.pi / 2
+
+
+def _extreme_point(seg: Seg, fr: _Frame, way: float) -> tuple[float, float]:
+    """The point of the circle of ``seg`` farthest toward ``way`` on ``a``."""
+    r = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
+    if fr.swap:
+        return seg.cx, seg.cz + way * r
+    return seg.cx + way * r, seg.cz
 
 
 def _emit(out: Out, seg: Seg) -> None:
@@ -182,7 +206,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     # Left or right of the profile's direction in (z, x) is toward the start.
     side = -s * t if not fr.swap else s * t
     way = (t, 0.0) if not fr.swap else (0.0, t)
-    moved = moved_by(profile, side, d, way, roughing=True)
+    moved, corners = moved_with_corners(profile, side, d, way, roughing=True)
     first, last = moved[0], moved[-1]
     p0a = fr.ab(first.x0, first.z0)[0]
     la, lb = fr.ab(last.x1, last.z1)
@@ -229,17 +253,20 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
             out.traverse(*fr.xz(level, entry))
             k += 1
     out.traverse(first.x0, first.z0)
-    walk = _split(moved, fr)
+    walk, tags = _split(moved, corners, fr, s)
     if variant == 1:
-        _bridged(out, fr, [*walk, closing] if closes else walk, len(walk), s, t)
+        ends = len(walk)
+        if closes:
+            walk.append(closing)
+            tags.append(MOVE)
+        _bridged(out, fr, walk, tags, ends, s, t)
         return
     top: float | None = None  # where the pocket being walked down began
-    for seg in walk:
+    for seg, tag in zip(walk, tags, strict=True):
         a0 = fr.ab(seg.x0, seg.z0)[0]
         a1 = fr.ab(seg.x1, seg.z1)[0]
-        if s * (a1 - a0) < -EPS:
-            top = None
-        elif s * (a1 - a0) > EPS:
+        down, deep = _depth(seg, fr, s)
+        if s * (deep - a0) > EPS:
             # a pocket: passes at the levels the segment goes down through (G7x.2: from the
             # pocket's top down, the others: on the start's grid)
             if top is None:
@@ -250,10 +277,14 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                 if s * level < s * a0 - EPS:
                     k += 1
                     continue
-                if s * level >= s * a1 - EPS:
+                if s * level >= s * deep - EPS:
                     break
-                cb = _level_hits(seg, fr, level)[0]
-                out.feed(*fr.xz(level, cb))
+                cb = _level_hits(down, fr, level)[0]
+                x, z = fr.xz(level, cb)
+                # down along the profile (from a pocket's top: only where a move of the
+                # profile goes down from it)
+                if tag == MOVE or abs(x - out.x) > 1e-6 or abs(z - out.z) > 1e-6:
+                    _emit(out, seg._replace(x1=x, z1=z))
                 end = exit_b(level, cb)
                 if end is not None:
                     out.feed(*fr.xz(level, end))
@@ -261,24 +292,27 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                     back = level - s * r
                     out.traverse(*fr.xz(back, end - t * r))
                     out.traverse(*fr.xz(back, cb + t * r))
-                    out.feed(*fr.xz(level, cb))
+                    out.feed(x, z)
                 k += 1
+        if s * (a1 - deep) < -EPS:  # climbing at its end
+            top = None
         _emit(out, seg)
     if closes:
         _emit(out, closing)
 
 
-def _bridged(out: Out, fr: _Frame, chain: list[Seg], pockets_end: int, s: float, t: float
-             ) -> None:
-    """G7x.1's contour pass: each move is entered by a feed to its start (of no length, as rs274
-    makes it), and a pocket is bridged by a feed across its top to where the level meets the
-    profile again, the walk going on from there."""
+def _bridged(out: Out, fr: _Frame, chain: list[Seg], tags: list[int], pockets_end: int,
+             s: float, t: float) -> None:
+    """G7x.1's contour pass: each move and corner arc is entered by a feed to its start (of no
+    length, as rs274 makes it), and a pocket is bridged by a feed across its top to where the
+    level meets the profile again, the walk going on from there (from the next piece where that
+    is a piece's end).  A pocket is entered by that feed of no length only at a corner arc."""
     i = 0
     while i < len(chain):
         seg = chain[i]
         a0, b0 = fr.ab(seg.x0, seg.z0)
-        a1 = fr.ab(seg.x1, seg.z1)[0]
-        if i < pockets_end and s * (a1 - a0) > EPS:
+        deep = _depth(seg, fr, s)[1]
+        if i < pockets_end and s * (deep - a0) > EPS:
             exit_at = None
             for j in range(i, len(chain)):
                 hits = [hb for hb in _level_hits(chain[j], fr, a0) if t * (hb - b0) > EPS]
@@ -286,13 +320,18 @@ def _bridged(out: Out, fr: _Frame, chain: list[Seg], pockets_end: int, s: float,
                     exit_at = (j, min(hits, key=lambda hb: t * hb))
                     break
             if exit_at is not None:
+                if tags[i] == CORNER:
+                    out.feed(seg.x0, seg.z0)
                 j, hb = exit_at
                 x, z = fr.xz(a0, hb)
                 out.feed(x, z)
-                _emit(out, chain[j]._replace(x0=x, z0=z))
+                land = chain[j]
+                if abs(x - land.x1) > EPS or abs(z - land.z1) > EPS:
+                    _emit(out, land._replace(x0=x, z0=z))
                 i = j + 1
                 continue
-        out.feed(seg.x0, seg.z0)
+        if tags[i] != CONT:
+            out.feed(seg.x0, seg.z0)
         _emit(out, seg)
         i += 1
 
