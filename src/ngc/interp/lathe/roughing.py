@@ -7,8 +7,9 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
 * The profile's first move, from the start point, is the approach; the rest is moved ``D`` toward
   the start as G70 moves it (``finishing.moved``; with a D, two lines in a row along X or along Z
   are refused first).  ``P0`` is the moved profile's first point, ``E`` its last.
-* A start ahead of the profile's first point along ``b`` (in the direction of the cut) is moved
-  back to that point's ``b``.
+* The passes cut along ``b`` the way the profile goes from ``P0`` to ``E`` (toward -b where it
+  goes nowhere along ``b``).  A start ahead of the profile's first point along ``b`` (in the
+  direction of the cut) is moved back to that point's ``b``.
 * The passes step from the start toward ``P0``: away from ``E`` on ``a`` (G71: toward larger X when
   E is below P0, else smaller; G72 the same on Z, a tie counting the other way).  If the profile
   lies nowhere beyond the start that way there is nothing to rough: the tool feeds along the
@@ -184,7 +185,8 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     else:
         s = 1.0 if ea < p0a else -1.0
     eb = fr.ab(rest[-1].x1, rest[-1].z1)[1]
-    t = 1.0 if eb >= sb else -1.0
+    fb = fr.ab(approach.x1, approach.z1)[1]
+    t = 1.0 if eb > fb else -1.0  # the way the profile goes (a profile going nowhere: toward -b)
     turn = -s  # how rs274's frame has the step axis (see the levels)
     if not fr.swap:
         out.zeros = _turning_zeros(s > 0, t > 0)
@@ -193,7 +195,6 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     if d:
         check_joinable(rest)
     # A start ahead of the profile's first point along the cut starts from that point's b.
-    fb = fr.ab(approach.x1, approach.z1)[1]
     if t * (sb - fb) > 0:
         sb = fb
         start = fr.xz(sa, sb)
