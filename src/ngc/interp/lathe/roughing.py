@@ -218,11 +218,12 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     chain = [*moved, closing] if closes else list(moved)
     approach_line = Seg(LINE, start[0], start[1], first.x0, first.z0)
 
-    def exit_b(level: float, from_b: float) -> float | None:
+    def exit_b(level: float, from_b: float, beyond: float = EPS) -> float | None:
+        """Where the level next meets the profile (or the closing line) past ``from_b``."""
         best: float | None = None
         for seg in chain:
             for hb in _level_hits(seg, fr, level):
-                if t * (hb - from_b) > EPS and (best is None or t * (hb - best) < 0):
+                if t * (hb - from_b) > beyond and (best is None or t * (hb - best) < 0):
                     best = hb
         return best
 
@@ -241,9 +242,10 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                 break
             hits = _level_hits(approach_line, fr, level)
             entry = hits[0] if hits else sb
-            end = exit_b(level, entry)
+            # (a level meeting the profile where it enters has nothing to cut)
+            end = exit_b(level, entry, -EPS)
             out.traverse(*fr.xz(level, entry))
-            if end is None:  # nothing to cut at this level: on to the next
+            if end is None or abs(end - entry) <= EPS:  # nothing to cut here: on to the next
                 k += 1
                 continue
             out.feed(*fr.xz(level, end))
@@ -253,8 +255,16 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
             out.traverse(*fr.xz(back, entry + t * r))
             out.traverse(*fr.xz(level, entry))
             k += 1
-    out.traverse(first.x0, first.z0)
     walk, tags = _split(moved, corners, fr, s)
+    if s * (p0a - sa) < -EPS:
+        # the moved profile starts short of the start's level: the way to it is cut too
+        if variant == 1:
+            walk.insert(0, approach_line)
+            tags.insert(0, MOVE)
+        else:
+            out.feed(first.x0, first.z0)
+    else:
+        out.traverse(first.x0, first.z0)
     if variant == 1:
         ends = len(walk)
         if closes:
