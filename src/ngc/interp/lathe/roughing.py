@@ -227,10 +227,15 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                     best = hb
         return best
 
+    grid = [turn * sa]
+
     def turned(k: int) -> float:
         """Level ``k`` of the start's grid in rs274's turned frame (its zeros keep their sign
-        there): the level itself is ``turn`` times it."""
-        return turn * sa + turn * s * k * inc
+        there), reached by stepping ``I`` at a time as rs274 does (its last digits show it): the
+        level itself is ``turn`` times it."""
+        while len(grid) <= k:
+            grid.append(grid[-1] + turn * s * inc)
+        return grid[k]
 
     out.traverse(*start)
     k = 0
@@ -292,9 +297,10 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                     break
                 cb = _level_hits(down, fr, level)[0]
                 x, z = fr.xz(level, cb)
-                # down along the profile (from a pocket's top: only where a move of the
+                # down along the profile (from a pocket's top: only where a line of the
                 # profile goes down from it)
-                if tag == MOVE or abs(x - out.x) > 1e-6 or abs(z - out.z) > 1e-6:
+                if (tag == MOVE and seg.kind == LINE) or abs(x - out.x) > 1e-6 \
+                        or abs(z - out.z) > 1e-6:
                     _emit(out, seg._replace(x1=x, z1=z))
                 end = exit_b(level, cb)
                 if end is not None:
