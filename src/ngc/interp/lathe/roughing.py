@@ -14,17 +14,23 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
   E is below P0, else smaller; G72 the same on Z, a tie counting the other way).  If the profile
   lies nowhere beyond the start that way there is nothing to rough: the tool feeds along the
   profile as programmed, approach included.
-* Each level ``start + k*I`` before P0: a traverse to where the level meets the approach, then (if
-  the level meets the profile, or the closing line from E back to the start's level) a feed along
-  ``b`` to the first such point, a traverse back R on both axes, a traverse to R past the entry,
-  and a traverse to the entry (R at most half the pass: a short pass retracts to its middle).
-* Then a traverse to P0 and a feed along the moved profile, its arcs cut where they reach an
-  extreme on ``a``.  Where it goes deeper (a pocket), each level of the start's grid it goes down
-  through (G7x.2: each level from the pocket's top) is cut: a feed to the level, across to the
-  profile's far side, a retract of R on both axes, a traverse back and a feed to the entry.
-  G7x.1 instead enters every move with a feed (of no length) to its start and bridges a pocket by
-  a feed across its top.  A last feed closes back to the start's level at E unless E lies beyond
-  it (G71: or on it).
+* Each level ``start + k*I`` before P0 (stepped ``I`` at a time): a traverse to where the level
+  meets the approach, then (if the level meets the profile, or the closing line from E back to
+  the start's level, past that point) a feed along ``b`` to the first such point, a traverse back
+  R on both axes, a traverse to R past the entry, and a traverse to the entry (R at most half the
+  pass: a short pass retracts to its middle).
+* Then a traverse to P0 (a feed where P0 lies short of the start's level) and a feed along the
+  moved profile, its arcs cut where they turn from climbing to going deeper.  Where it goes
+  deeper (a pocket), each level of the start's grid it goes down through (G7x.2: each level from
+  the pocket's top) is cut: a feed down along the profile to the level (from the top itself only
+  where a line of the profile goes down from it), across to the profile's far side, a retract of
+  R on both axes, a traverse back and a feed to the entry.  G7x.1 instead enters each move and
+  each arc rounding a corner with a feed (of no length) to its start and bridges a pocket by a
+  feed across its top (entered so only from a corner's arc).  A last feed closes back to the
+  start's level at E unless E lies beyond it (G71: or on it).
+* rs274 leaves out some of G7x.1's feeds of no length.  The cases found (a crossing of lines
+  along X and Z, the ends of a chamfer or a fillet) suggest it feeds only where its arithmetic
+  leaves the two points unequal; no rule is known, and ngc always feeds.
 * Zeros print with the sign rs274's frame gives them (``_turning_zeros``, ``_facing_zeros``).
 """
 
