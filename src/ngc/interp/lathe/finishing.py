@@ -51,10 +51,14 @@ from .profile import CCW, CW, LINE, NOT_MONOTONIC, PARALLEL, Profile, Seg, steps
 ROUNDED = 0.01
 
 
+# a step smaller than this is none (the last digits an incremental move leaves)
+_NO_STEP = 1e-12
+
+
 def _monotonic(moves: list[Seg], axis: int, way: float) -> bool:
     for seg in moves:
         step, one_way = steps(seg, axis)
-        if not one_way or step * way < 0:
+        if not one_way or (step * way < 0 and abs(step) > _NO_STEP):
             return False
     return True
 
@@ -67,7 +71,7 @@ def _entry(profile: Profile, start: tuple[float, float]
     first = profile[0]
     fx, fz = first.x1, first.z1
     moves = profile[1:]
-    way = 1.0 if any(seg.z1 - seg.z0 > 0 for seg in moves[1:]) else -1.0
+    way = 1.0 if any(seg.z1 - seg.z0 > _NO_STEP for seg in moves[1:]) else -1.0
     if _monotonic(moves, 1, way):
         return ((sx, fz) if (sz - fz) * way > 0 else start), (way, 0.0)
     last = moves[-1]
