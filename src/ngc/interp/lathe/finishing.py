@@ -169,8 +169,9 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
     """The profile after ``F`` moved ``d`` to ``side``, its corners joined (``axis``: the unit
     (z, x) direction the profile goes along).  G70 measures an outside corner's gap along
     ``axis`` and refuses two moved lines in line; for G71/G72 (``roughing``) the gap is measured
-    along Z, slanted lines in line join, and a line shorter than ``d`` that turns round between
-    its corners is left out."""
+    along the axis the passes cut along (Z for G71, X for G72: ``axis`` either way round),
+    slanted lines in line join, and a line shorter than ``d`` that turns round between its
+    corners is left out."""
     return moved_with_corners(profile, side, d, axis, roughing=roughing)[0]
 
 
@@ -181,7 +182,7 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
     corners: set[int] = set()
     if d == 0.0:
         return list(moves), corners
-    gz, gx = (1.0, 0.0) if roughing else axis
+    gz, gx = (abs(axis[0]), abs(axis[1])) if roughing else axis
     mirror = _mirror(profile, axis)
     shifted = [_move(seg, side, d) for seg in moves]
     out: list[Seg] = []

@@ -19,7 +19,7 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
   the start's level, past that point) a feed along ``b`` to the first such point, a traverse back
   R on both axes, a traverse to R past the entry, and a traverse to the entry (R at most half the
   pass: a short pass retracts to its middle).
-* Then a traverse to P0 (a feed where P0 lies short of the start's level) and a feed along the
+* Then a traverse to P0 (a feed where P0 lies at or short of the start's level) and a feed along the
   moved profile, its arcs cut where they turn from climbing to going deeper.  Where it goes
   deeper (a pocket), each level of the start's grid it goes down through (G7x.2: each level from
   the pocket's top) is cut: a feed down along the profile to the level (from the top itself only
@@ -267,8 +267,8 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
             out.traverse(*fr.xz(level, entry))
             k += 1
     walk, tags = _split(moved, corners, fr, s)
-    if s * (p0a - sa) < -EPS:
-        # the moved profile starts short of the start's level: the way to it is cut too
+    if s * (p0a - sa) < EPS:
+        # the moved profile starts at or short of the start's level: the way to it is cut too
         if variant == 1:
             walk.insert(0, approach_line)
             tags.insert(0, MOVE)
