@@ -31,6 +31,7 @@ def test_reads_plain_lines(text: str, expected: object) -> None:
     "1x2",  # not a letter first
     "x",  # a letter without a number
     "xy1",
+    "g x1",  # a letter whose number is only spaces
     "m3",  # an M word has rules of its own
     "t1",  # an integer word
     "nx1",  # a bad line number
