@@ -224,8 +224,20 @@ class FastPath:
         compensation = m.comp
         pos = st.pos if compensation is None else compensation.prog
         if st.absolute:
-            end = [w.get("x", pos[0]), w.get("y", pos[1]), w.get("z", pos[2]),
-                   w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
+            # (cheaper than six w.get calls: a line has two or three axis words)
+            end = pos.copy()
+            if "x" in w:
+                end[0] = w["x"]
+            if "y" in w:
+                end[1] = w["y"]
+            if "z" in w:
+                end[2] = w["z"]
+            if "a" in w:
+                end[3] = w["a"]
+            if "b" in w:
+                end[4] = w["b"]
+            if "c" in w:
+                end[5] = w["c"]
         else:
             end = motion.relative_end(pos, w)
         if code in self._arcs:
