@@ -9,6 +9,7 @@ messages are rs274's: overview.adoc "Format of a line", "Numbers", "Parameters",
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from types import MappingProxyType
 
 from ..errors import NgcError, NgcRuntimeError, NgcSyntaxError
@@ -261,7 +262,7 @@ def raw_column(raw: str, index: int) -> int:
 class _Reader:
     """Reads the items of a normalized line, rs274's way (the general path)."""
 
-    __slots__ = ("block", "i", "letters", "read", "s", "table")
+    __slots__ = ("block", "i", "letters", "read", "s", "table", "trig")
 
     def __init__(self, text: str, block: Block, table: CodeTable = LINUXCNC) -> None:
         self.s = text
@@ -272,6 +273,8 @@ class _Reader:
         # The constant words read so far: rs274 raises a word's errors (a repeated letter, two
         # codes of one group) when it reads the word, before it reads what follows.
         self.read = Words()
+        # SIN, COS and TAN of this line (see expressions.trig_functions), made at the first.
+        self.trig: dict[str, Callable[[float], float]] | None = None
 
     def error(self, message: str, at: int | None = None) -> NgcSyntaxError:
         return NgcSyntaxError(message, column=(self.i if at is None else at) + 1)
@@ -493,6 +496,10 @@ class _Reader:
             if not s.startswith("[", self.i):
                 raise self.error("Left bracket missing after slash with atan")
             return ex.fold_binary_fn(ex.atan2_degrees, arg, self.read_expression())
+        if name in _TRIG:
+            if self.trig is None:
+                self.trig = ex.trig_functions()
+            return ex.fold_unary(self.trig[name], arg, check=True)
         return ex.fold_unary(ex.UNARY[name], arg, check=True)
 
     def read_exists(self) -> ex.Value:
@@ -586,6 +593,7 @@ class _EagerReader(_Reader):
         return self.now(super().read_value())
 
 
+_TRIG = frozenset({"sin", "cos", "tan"})
 _FUNCTIONS = (
     "abs",
     "acos",
