@@ -542,6 +542,15 @@ class _Reader:
         closure, as in ``expressions.fold_*``: a shared helper would cost a call per read."""
         if self.s.startswith("<", self.i):
             name = self.read_name()
+            if not name.startswith("_"):
+
+                def local(p: ex.ParamContext) -> float:
+                    v = p.local(name)
+                    if v - v == 0.0:
+                        return v
+                    raise ex.nonfinite(v)
+
+                return local
 
             def named(p: ex.ParamContext) -> float:
                 v = p.named(name)
