@@ -38,19 +38,20 @@ _PROFILE_LETTERS = _LETTERS + "uw"  # a lathe cycle's profile: U, W are incremen
 # How rs274 names a repeated word that is not named by its letter.
 _WORD_NAMES = MappingProxyType({"$": "spindle choice ($)"})
 _LOWER = "abcdefghijklmnopqrstuvwxyz"
+# Letters the fast path takes: plain real-valued words (no M, no integer words, no N/O).
+_FAST_LETTERS = frozenset("abcdefgijkpqrsxyz")  # not H L T: integers, checked as read
 # split_plain's tables (translations without deleted bytes: bytes.translate sets up a table of
 # its own for those, which costs more than the rest of the reading): the bytes that end a number,
 # as NUL (a letter, or a byte that has no place in a plain line: float() takes a form feed or \v
-# as white space, rs274 does not), and the letters lowered, every other byte a space.
+# as white space, rs274 does not), and the letters the fast path takes (and N) lowered, every
+# other byte a space.
 _SKIPPED = "\t\n\r"
 _CUTS = bytes(0 if chr(c).lower() in _LOWER or chr(c) == "_" or c == 127
               or (c < 32 and chr(c) not in _SKIPPED) else c for c in range(256))
-_LETTERS_ONLY = bytes(ord(chr(c).lower()) if chr(c).lower() in _LOWER and c < 128 else 32
-                      for c in range(256))
+_LETTERS_ONLY = bytes(ord(chr(c).lower()) if chr(c).lower() in _FAST_LETTERS | {"n"} and c < 128
+                      else 32 for c in range(256))
 _N_WORD = re.compile(r"n(\d+)(?:\.\d*)?")
 _LINE_NUMBER = re.compile(rb"(\d+)(?:\.\d*)?")
-# Letters the fast path takes: plain real-valued words (no M, no integer words, no N/O).
-_FAST_LETTERS = frozenset("abcdefgijkpqrsxyz")  # not H L T: integers, checked as read
 _NUMBER_TOKEN = re.compile(r"[-+]?[0-9.]*")
 _STRTOD = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)")
 _NAME_END = re.compile(r"[^a-z]")
@@ -183,29 +184,31 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
         return None
     # The text between the letters, spaces dropped, and the letters: two byte translations
     # (cheaper than a regular expression).  A byte that has no place in a plain line ("_", a
-    # control character but the white space rs274 skips) cuts the line once more, and two
-    # letters with nothing between them read as one, so that such a line has not one number
-    # per letter.
+    # control character but the white space rs274 skips) cuts the line once more, a letter the
+    # fast path does not take is left out of the letters, and two letters with nothing between
+    # them read as one, so that such a line has not one number per letter.
     data = text.encode()
     parts = data.translate(_CUTS).replace(b" ", b"").split(b"\0")
     letters = data.translate(_LETTERS_ONLY).decode().split()
     if parts[0] or len(parts) != len(letters) + 1:
         return None
     digits = None
+    i = 1  # (parts[0] is empty)
     if letters and letters[0] == "n":
         m = _LINE_NUMBER.fullmatch(parts[1])
         if m is None:
             return None
         digits = m.group(1).decode()
-        letters = letters[1:]
-        del parts[1]
-    del parts[0]
+        del letters[0]
+        i = 2
+    w = {}
     try:
-        # one number per letter
-        w = dict(zip(letters, map(float, parts)))  # noqa: B905 (a keyword costs a dict)
+        for letter in letters:  # one number per letter (cheaper than dict(zip(...)))
+            w[letter] = float(parts[i])
+            i += 1
     except ValueError:
         return None
-    if len(w) != len(letters) or not _FAST_LETTERS.issuperset(w):
+    if len(w) != len(letters) or "n" in w:
         return None
     return w, w.pop("g", None), digits
 
