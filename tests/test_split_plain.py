@@ -31,9 +31,12 @@ def test_reads_plain_lines(text: str, expected: object) -> None:
     "1x2",  # not a letter first
     "x",  # a letter without a number
     "xy1",
+    "g x1",  # a letter whose number is only spaces
     "m3",  # an M word has rules of its own
     "t1",  # an integer word
     "nx1",  # a bad line number
+    "x1n2",  # N not first
+    "g1x1h2",  # an integer word after plain ones
     "n1a",  # N ... then A without a number
     "x#1",
     "x[1]",

@@ -10,6 +10,11 @@ This does the same in integer arithmetic: the long double angle exactly, its rem
 nearest multiple of pi/2 against pi to 1,300 bits, sine and cosine of the remainder by their
 series in fixed point to 2**-160 (from a table of sin and cos of j/32), rounded to 64 bits, then to
 53.
+
+Each integer operation costs about as much as a few lines of Python, so the steps are written out
+in one function (:func:`_turns`), and :class:`Trig` keeps the last angle's sine and cosine: a
+line that takes both of one angle (``X[R * COS[A]] Y[R * SIN[A]]``, a point on a circle) reduces
+it once.
 """
 
 from __future__ import annotations
@@ -84,33 +89,71 @@ def _series(r: int) -> tuple[int, int]:
 _STEP = _FRAC - 5
 _TABLE = tuple(_series(j << _STEP) for j in range(27))
 _SCALE = float(1 << _FRAC)
+_ONE = 1 << _FRAC
+_HALF_STEP = 1 << (_STEP - 1)
+# pi/2 in the fixed point of a remainder taken from an angle below 2**w radians (w = 0 .. _WIDE):
+# 8 bits more than _FRAC, and w more
+_WIDE = 64
+_HALF_PIS = tuple(_HALF_PI >> (_PI_BITS - (_FRAC + 8 + w)) for w in range(_WIDE + 1))
+# 2**(e - _FRAC) for a result of e more bits than a long double's 64 (e = 0 .. _FRAC + 1)
+_UNITS = tuple(2.0 ** (e - _FRAC) for e in range(_FRAC + 2))
+# Up to this many quarter turns, the nearest is found from x / 90 in doubles (closer to a half
+# than this margin, the exact division decides).
+_QUARTERS = 1e9
+_MARGIN = 0.499
 
 
-def _sin_cos(r: int) -> tuple[int, int]:
-    """sin and cos of ``r * 2**-_FRAC`` (|r| <= pi/4), in the same fixed point, to about 2**-72
-    of the result: from the table's nearest j/32, and the series of the rest u (|u| <= 1/64),
-    whose terms past u and u**2/2 are small enough for doubles."""
-    a = -r if r < 0 else r
-    j = (a + (1 << (_STEP - 1))) >> _STEP
-    u = a - (j << _STEP)
+def _turns(x: float) -> tuple[int, int, int] | None:
+    """``x`` degrees (x > 0, finite) as rs274's long double angle: (k, s, c), the angle being k
+    quarter turns (0 .. 3) plus r with |r| <= pi/4, s and c sin r and cos r in fixed point
+    (2**-_FRAC), to about 2**-72; None for an angle so small that its sine is itself and its
+    cosine 1, to the long double.
+
+    The steps of :func:`_angle`, :func:`_round_bits` and the reduction written out (ties to
+    even: ``n + half - 1 + lowest bit``, shifted).
+    """
+    num, den = x.as_integer_ratio()  # den is a power of two
+    n = num * _PI_LD
+    extra = n.bit_length() - 64  # (>= 0: _PI_LD has 64 bits)
+    e = extra - 61 - den.bit_length()
+    if extra:
+        n = (n + (1 << (extra - 1)) - 1 + ((n >> extra) & 1)) >> extra
+    q, rest = divmod(n << 72, 180)  # 72 more bits than the quotient needs to round once
+    q = (q << 1) | (rest != 0)  # the low bit keeps a remainder's trace
+    extra = q.bit_length() - 64
+    m = (q + (1 << (extra - 1)) - 1 + ((q >> extra) & 1)) >> extra
+    e += extra - 73
+    # the angle is m * 2**e, below 2**w
+    w = e + 64
+    if w < -70:
+        return None
+    if w <= 0:
+        width = _FRAC + 8
+        half_pi = _HALF_PIS[0]
+    else:
+        width = _FRAC + 8 + w
+        half_pi = _HALF_PIS[w] if w <= _WIDE else _HALF_PI >> (_PI_BITS - width)
+    shift = e + width
+    a = m << shift if shift >= 0 else m >> -shift
+    quarters = x / 90.0
+    k = int(quarters + 0.5)
+    if not (quarters < _QUARTERS and -_MARGIN < quarters - k < _MARGIN):
+        k = (2 * a + half_pi) // (2 * half_pi)
+    r = (a - k * half_pi) >> (width - _FRAC) if k else a >> (width - _FRAC)
+    # sin and cos of r: from the table's nearest j/32, and the series of the rest u
+    # (|u| <= 1/64), whose terms past u and u**2/2 are small enough for doubles
+    u = -r if r < 0 else r
+    j = (u + _HALF_STEP) >> _STEP
+    u -= j << _STEP
     sj, cj = _TABLE[j]
     uf = u / _SCALE
     uf2 = uf * uf
     sin_u = u - int(uf * uf2 * (1 / 6 - uf2 * (1 / 120 - uf2 / 5040)) * _SCALE)
-    cos_u = (1 << _FRAC) - ((u * u) >> (_FRAC + 1)) + int(
+    cos_u = _ONE - ((u * u) >> (_FRAC + 1)) + int(
         uf2 * uf2 * (1 / 24 - uf2 * (1 / 720 - uf2 / 40320)) * _SCALE)
     s = (sj * cos_u + cj * sin_u) >> _FRAC
     c = (cj * cos_u - sj * sin_u) >> _FRAC
-    return (-s if r < 0 else s), c
-
-
-def _reduced(m: int, e: int) -> tuple[int, int]:
-    """(k mod 4, r): ``m * 2**e`` is k times pi/2 plus ``r * 2**-_FRAC`` (|r| <= pi/4)."""
-    width = _FRAC + max(0, e + 64) + 8
-    half_pi = _HALF_PI >> (_PI_BITS - width)
-    a = m << (e + width) if e + width >= 0 else m >> -(e + width)
-    k = (2 * a + half_pi) // (2 * half_pi)
-    return k % 4, (a - k * half_pi) >> (width - _FRAC)
+    return k & 3, (-s if r < 0 else s), c
 
 
 def _to_double(v: int, shift: int) -> float:
@@ -122,10 +165,49 @@ def _to_double(v: int, shift: int) -> float:
     return d if v > 0 else -d
 
 
-def _tiny(e: int) -> bool:
-    """An angle (exponent ``e`` of its 64-bit mantissa) so small that its sine is itself and its
-    cosine 1, to the long double."""
-    return e + 64 < -70
+def _fixed_to_double(v: int) -> float:
+    """``v * 2**-_FRAC`` (|v| <= 2**_FRAC) rounded to a long double, then to a double: the
+    64-bit mantissa's float (rounded once, ties to even) scaled by a power of two, which is exact
+    (no result of these functions is subnormal)."""
+    a = -v if v < 0 else v
+    extra = a.bit_length() - 64
+    if extra <= 0:
+        return _to_double(v, -_FRAC)
+    d = float((a + (1 << (extra - 1)) - 1 + ((a >> extra) & 1)) >> extra) * _UNITS[extra]
+    return -d if v < 0 else d
+
+
+def _tiny(x: float) -> float:
+    """The sine (and tangent) of an angle of ``x`` degrees too small for :func:`_turns`: the
+    angle itself."""
+    m, e = _angle(abs(x))
+    return _to_double(m if x > 0 else -m, e)
+
+
+def _sin(x: float, turns: tuple[int, int, int] | None) -> float:
+    if turns is None:
+        return _tiny(x)
+    k, s, c = turns
+    v = c if k & 1 else s
+    return _fixed_to_double(v if (k < 2) == (x > 0) else -v)
+
+
+def _cos(turns: tuple[int, int, int] | None) -> float:
+    if turns is None:
+        return 1.0
+    k, s, c = turns
+    v = s if k & 1 else c
+    return _fixed_to_double(v if k == 0 or k == 3 else -v)
+
+
+def _tan(x: float, turns: tuple[int, int, int] | None) -> float:
+    if turns is None:
+        return _tiny(x)
+    k, s, c = turns
+    if k & 1:
+        s, c = c, -s
+    q = (abs(s) << _FRAC) // abs(c)
+    return _to_double(q if ((s >= 0) == (c > 0)) == (x > 0) else -q, -_FRAC)
 
 
 def sin_degrees(x: float) -> float:
@@ -136,13 +218,7 @@ def sin_degrees(x: float) -> float:
     >>> sin_degrees(180.0)
     -5.016557612668332e-20
     """
-    m, e = _angle(abs(x))
-    if _tiny(e):
-        return _to_double(m if x > 0 else -m, e)
-    k, r = _reduced(m, e)
-    s, c = _sin_cos(r)
-    v = s if k % 2 == 0 else c
-    return _to_double(v if (k < 2) == (x > 0) else -v, -_FRAC)
+    return _sin(x, _turns(-x if x < 0 else x))
 
 
 def cos_degrees(x: float) -> float:
@@ -151,13 +227,7 @@ def cos_degrees(x: float) -> float:
     >>> cos_degrees(90.0)
     -2.508278806334166e-20
     """
-    m, e = _angle(abs(x)) if x else (0, 0)
-    if _tiny(e):
-        return 1.0
-    k, r = _reduced(m, e)
-    s, c = _sin_cos(r)
-    v = c if k % 2 == 0 else s
-    return _to_double(v if k in (0, 3) else -v, -_FRAC)
+    return _cos(_turns(-x if x < 0 else x)) if x else 1.0
 
 
 def tan_degrees(x: float) -> float:
@@ -166,12 +236,32 @@ def tan_degrees(x: float) -> float:
     >>> tan_degrees(45.0), tan_degrees(90.0)
     (1.0, -3.98679762981171e+19)
     """
-    m, e = _angle(abs(x))
-    if _tiny(e):
-        return _to_double(m if x > 0 else -m, e)
-    k, r = _reduced(m, e)
-    s, c = _sin_cos(r)
-    if k % 2:
-        s, c = c, -s
-    q = (abs(s) << _FRAC) // abs(c)
-    return _to_double(q if ((s >= 0) == (c > 0)) == (x > 0) else -q, -_FRAC)
+    return _tan(x, _turns(-x if x < 0 else x))
+
+
+class Trig:
+    """SIN, COS and TAN of degrees (finite, not zero) that keep the last angle's reduction."""
+
+    __slots__ = ("_angle", "_turns")
+
+    def __init__(self) -> None:
+        self._angle = 0.0  # (never asked for: zero is answered before)
+        self._turns: tuple[int, int, int] | None = None
+
+    def _reduced(self, a: float) -> tuple[int, int, int] | None:
+        """:func:`_turns` of ``a`` (> 0): kept from the last call for the same angle (floats that
+        are equal and not zero are the same number)."""
+        if a == self._angle:
+            return self._turns
+        turns = self._turns = _turns(a)
+        self._angle = a
+        return turns
+
+    def sin(self, x: float) -> float:
+        return _sin(x, self._reduced(-x if x < 0 else x))
+
+    def cos(self, x: float) -> float:
+        return _cos(self._reduced(-x if x < 0 else x))
+
+    def tan(self, x: float) -> float:
+        return _tan(x, self._reduced(-x if x < 0 else x))

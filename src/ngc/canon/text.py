@@ -3,9 +3,10 @@
 Each line is a running counter (``%5d ``), the block's N column, then the call in C printf format.
 
 Formatting numbers is most of the sink's work.  A move's last four fields (Z A B C, or the helix
-end and A B C of an arc) are most often the very objects the move before carried (an axis not
-programmed keeps its value): when they are, the text made for them is used again.  The test is
-identity, not equality, so -0.0 never takes the text of 0.0.
+end and A B C of an arc) are most often the very objects the move before of its sort carried (an
+axis not programmed keeps its value; traverses run at a clearance height, feeds and arcs at a
+cutting depth): when they are, the text made for them is used again.  The test is identity, not
+equality, so -0.0 never takes the text of 0.0.
 """
 
 from __future__ import annotations
@@ -15,21 +16,34 @@ from typing import Any, TextIO
 
 from .ops import SHOWN, TEMPLATES, ArcFeed, Op, StraightFeed, StraightTraverse
 
-# The ops whose last four fields are the tail kept (see the module docstring): the moves, whose
-# tail starts at field 2 (a straight move) or 5 (an arc).
-_TAILED = (StraightTraverse, StraightFeed, ArcFeed)
 _TAIL = "%.4f, %.4f, %.4f, %.4f"
-_Format = tuple[str, str, int, list[Any]]
+# A move's whole line, and its line with the tail as one %s (see the module docstring).
+_MOVES = (StraightTraverse, StraightFeed, ArcFeed)
+_LINES: dict[type, str] = {kind: "%5d %s" + TEMPLATES[kind] + "\n" for kind in _MOVES}
+_HEADS: dict[type, str] = {kind: template[:template.rindex(", " + _TAIL)] + ", %s)\n"
+          for kind, template in _LINES.items()}
+_ARC_LINE = _LINES[ArcFeed]
+_ARC_HEAD = _HEADS[ArcFeed]
 
 
-def _format(kind: type) -> _Format:
-    template = "%5d %s" + TEMPLATES[kind] + "\n"
-    if kind in SHOWN:  # (a negative start: the number of fields shown)
-        return template, "", -SHOWN[kind], []
-    if kind not in _TAILED:
-        return template, "", 0, []
-    head = template[:template.rindex(", " + _TAIL)] + ", %s)\n"
-    return template, head, len(kind._fields) - 4, [None, (None,) * 4, None]
+def _format(kind: type) -> tuple[str, int]:
+    """The line template of an op other than a move, and how many of its fields it shows (0:
+    all)."""
+    return "%5d %s" + TEMPLATES[kind] + "\n", SHOWN.get(kind, 0)
+
+
+class _Tail:
+    """The tail of the last move of a sort that missed (its Z A B C objects), and its text once
+    a move had the same tail again (None until then)."""
+
+    __slots__ = ("a", "b", "c", "text", "z")
+
+    def __init__(self) -> None:
+        self.z: object = None
+        self.a: object = None
+        self.b: object = None
+        self.c: object = None
+        self.text: str | None = None
 
 
 class TextSink:
@@ -38,7 +52,8 @@ class TextSink:
     Lines are collected and written in batches (``flush`` writes the rest; call it at the end).
     """
 
-    __slots__ = ("_count", "_formats", "_lines", "_prints", "_stream")
+    __slots__ = ("_append", "_count", "_cut", "_formats", "_lines", "_prints", "_stream",
+                 "_traverse")
 
     BATCH_MASK = 4095  # write every 4096 operations
 
@@ -48,26 +63,28 @@ class TextSink:
         self._stream = stream
         self._prints = prints
         self._lines: list[str] = []
+        self._append = self._lines.append
         self._count = 0
-        # op type -> its template, and for a move: the template with the tail as one %s, where
-        # the tail starts, and [the last move's first tail field, a tail, that tail's text once a
-        # move had it again]
-        self._formats: dict[type, _Format] = {}
+        # op type (not a move) -> its template and the number of fields shown
+        self._formats: dict[type, tuple[str, int]] = {}
+        # the tails kept: of the traverses, and of the feeds and arcs
+        self._traverse = _Tail()
+        self._cut = _Tail()
 
     def emit(self, op: Op, label: str, line: int) -> None:
+        kind = type(op)
+        if kind in _LINES:
+            self.emit_move(kind, op, label, line)  # type: ignore[arg-type]
+            return
         try:
-            template, _, i, _ = self._formats[type(op)]
+            template, shown = self._formats[kind]
         except KeyError:
-            template, _, i, _ = self._formats[type(op)] = _format(type(op))
-        if i:
-            if i < 0:
-                op = op[:-i]  # type: ignore[index]
-            else:
-                self.emit_move(type(op), op, label, line)  # type: ignore[arg-type]
-                return
+            template, shown = self._formats[kind] = _format(kind)
+        if shown:
+            op = op[:shown]  # type: ignore[index]
         count = self._count = self._count + 1
         # (a tuple concatenation is cheaper than unpacking into a new tuple)
-        self._lines.append(template % ((count, label) + op))  # type: ignore[operator]  # noqa: RUF005
+        self._append(template % ((count, label) + op))  # type: ignore[operator]  # noqa: RUF005
         if not count & self.BATCH_MASK:
             self.flush()
 
@@ -75,32 +92,36 @@ class TextSink:
         """``emit(kind(*fields), label, line)`` for a move (see :func:`ngc.canon.ops.mover`),
         without making the op."""
         count = self._count = self._count + 1
-        try:
-            template, head, i, memo = self._formats[kind]
-        except KeyError:
-            template, head, i, memo = self._formats[kind] = _format(kind)
-        z = fields[i]
-        if z is memo[0]:
-            last = memo[1]
-            a, b, c = fields[i + 1], fields[i + 2], fields[i + 3]
-            if a is last[1] and b is last[2] and c is last[3]:
-                text = memo[2]
+        if kind is ArcFeed:
+            x, y, i, j, turn, z, a, b, c = fields
+            kept = self._cut
+            if z is not kept.z:
+                kept.z = z  # (the A B C kept may be older: the text waits for a match)
+                kept.text = None
+                self._append(_ARC_LINE % (count, label, x, y, i, j, turn, z, a, b, c))
+            elif a is kept.a and b is kept.b and c is kept.c:
+                text = kept.text
                 if text is None:
-                    text = memo[2] = _TAIL % (z, a, b, c)
-                if i == 2:
-                    line_text = head % (count, label, fields[0], fields[1], text)
-                else:
-                    line_text = head % (count, label, fields[0], fields[1], fields[2], fields[3],
-                                        fields[4], text)
-                self._lines.append(line_text)
-                if not count & self.BATCH_MASK:
-                    self.flush()
-                return
-            memo[1] = (z, a, b, c)
+                    text = kept.text = _TAIL % (z, a, b, c)
+                self._append(_ARC_HEAD % (count, label, x, y, i, j, turn, text))
+            else:
+                kept.a, kept.b, kept.c, kept.text = a, b, c, None
+                self._append(_ARC_LINE % (count, label, x, y, i, j, turn, z, a, b, c))
         else:
-            memo[0] = z  # (the A B C kept may be older: the text waits for a match)
-        memo[2] = None
-        self._lines.append(template % (count, label, *fields))
+            x, y, z, a, b, c = fields
+            kept = self._traverse if kind is StraightTraverse else self._cut
+            if z is not kept.z:
+                kept.z = z  # (the A B C kept may be older: the text waits for a match)
+                kept.text = None
+                self._append(_LINES[kind] % (count, label, x, y, z, a, b, c))
+            elif a is kept.a and b is kept.b and c is kept.c:
+                text = kept.text
+                if text is None:
+                    text = kept.text = _TAIL % (z, a, b, c)
+                self._append(_HEADS[kind] % (count, label, x, y, text))
+            else:
+                kept.a, kept.b, kept.c, kept.text = a, b, c, None
+                self._append(_LINES[kind] % (count, label, x, y, z, a, b, c))
         if not count & self.BATCH_MASK:
             self.flush()
 
@@ -108,7 +129,7 @@ class TextSink:
         if self._prints is not None:
             self._prints.write(text + "\n")
         else:
-            self._lines.append(text + "\n")
+            self._append(text + "\n")
 
     def flush(self) -> None:
         """Write what is collected."""

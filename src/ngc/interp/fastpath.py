@@ -134,30 +134,37 @@ class FastPath:
             found = split_plain(raw)
             if found is None:
                 return self.comment_line(raw, number)
-            hit = self.entry(found)
-            if hit is not None:
-                cache = self._lines
-                if len(cache) >= PLAIN_CACHE_SIZE:
-                    cache.clear()
-                cache[raw] = hit
-            else:
-                words, g, digits = found
-                r = words_of(words, g, self.table)
-                if not r.moves and r.g.get(G_NON_MODAL) != G_MACHINE_COORDINATES:
-                    return self._run_static(raw, number, r, n_label(digits))
-                block = Block(number, raw.rstrip(C_SPACE))
-                block.resolved = r
-                if digits is not None:
-                    block.n_number = int(digits)
-                    block.label = n_label(digits)
-                self.execute(block)
-                return True
+            # (what entry() does, written out: most lines are read once)
+            words, g, digits = found
+            motion = None if g is None else self._motion.get(g)
+            if (g is not None and motion is None) or not self._letters[motion].issuperset(words):
+                return self._not_plain(raw, number, words, g, digits)
+            hit = words, motion, "N..... " if digits is None else n_label(digits)
+            cache = self._lines
+            if len(cache) >= PLAIN_CACHE_SIZE:
+                cache.clear()
+            cache[raw] = hit
         w, code, m.label = hit
         m.line = m.state.line = number
         if w is None:  # moves nothing: code is (resolved words, steps)
             self.dispatcher.run(m, code[0], code[1])  # type: ignore[index]
             return True
         self.convert(w, code)
+        return True
+
+    def _not_plain(self, raw: str, number: int, words: dict[str, float], g: float | None,
+                   digits: str | None) -> bool:
+        """A line split_plain read that is not plain: run on the general path, or planned once
+        if it moves nothing (see :meth:`_run_static`)."""
+        r = words_of(words, g, self.table)
+        if not r.moves and r.g.get(G_NON_MODAL) != G_MACHINE_COORDINATES:
+            return self._run_static(raw, number, r, n_label(digits))
+        block = Block(number, raw.rstrip(C_SPACE))
+        block.resolved = r
+        if digits is not None:
+            block.n_number = int(digits)
+            block.label = n_label(digits)
+        self.execute(block)
         return True
 
     def _run_static(self, raw: str, number: int, r: Words, label: str) -> bool:
@@ -224,8 +231,20 @@ class FastPath:
         compensation = m.comp
         pos = st.pos if compensation is None else compensation.prog
         if st.absolute:
-            end = [w.get("x", pos[0]), w.get("y", pos[1]), w.get("z", pos[2]),
-                   w.get("a", pos[3]), w.get("b", pos[4]), w.get("c", pos[5])]
+            # (cheaper than six w.get calls: a line has two or three axis words)
+            end = pos.copy()
+            if "x" in w:
+                end[0] = w["x"]
+            if "y" in w:
+                end[1] = w["y"]
+            if "z" in w:
+                end[2] = w["z"]
+            if "a" in w:
+                end[3] = w["a"]
+            if "b" in w:
+                end[4] = w["b"]
+            if "c" in w:
+                end[5] = w["c"]
         else:
             end = motion.relative_end(pos, w)
         if code in self._arcs:

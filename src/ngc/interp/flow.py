@@ -253,6 +253,9 @@ class _Skimming:
     def named(self, name: str) -> float:
         return self.params.named(name) if self.params.exists(name) else 0.0
 
+    def local(self, name: str) -> float:
+        return self.named(name)
+
     def exists(self, name: str) -> bool:
         return self.params.exists(name)
 

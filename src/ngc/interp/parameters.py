@@ -157,6 +157,12 @@ class Parameters:
             raise NgcRuntimeError(f"Named parameter #<{name}> not defined")
         return value
 
+    def local(self, name: str) -> float:
+        value = self.locals[-1].get(name)
+        if value is None:
+            raise NgcRuntimeError(f"Named parameter #<{name}> not defined")
+        return value
+
     def exists(self, name: str) -> bool:
         if name.startswith("_"):
             if name.startswith(INI_PREFIX) and name not in self.globals:

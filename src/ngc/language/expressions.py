@@ -25,6 +25,10 @@ class ParamContext(Protocol):
 
     def named(self, name: str) -> float: ...
 
+    def local(self, name: str) -> float:
+        """``named(name)`` for a name of the current scope (one not starting with ``_``)."""
+        ...
+
     def exists(self, name: str) -> bool: ...
 
     def index(self, value: float) -> int: ...
@@ -225,6 +229,31 @@ def _tan(x: float) -> float:
     if x - x != 0.0:
         return math.nan
     return x if x == 0.0 else degrees.tan_degrees(x)
+
+
+def trig_functions() -> dict[str, Callable[[float], float]]:
+    """SIN, COS and TAN as :data:`UNARY` has them, keeping the last angle's reduction
+    (:class:`ngc.degrees.Trig`): the parser gives the functions of one line one such set, so that
+    ``X[R * COS[A]] Y[R * SIN[A]]`` reduces A once."""
+    trig = degrees.Trig()
+    sin_, cos_, tan_ = trig.sin, trig.cos, trig.tan
+
+    def sin(x: float) -> float:
+        if x - x != 0.0:
+            return math.nan
+        return x if x == 0.0 else sin_(x)
+
+    def cos(x: float) -> float:
+        if x - x != 0.0:
+            return math.nan
+        return cos_(x) if x else 1.0
+
+    def tan(x: float) -> float:
+        if x - x != 0.0:
+            return math.nan
+        return x if x == 0.0 else tan_(x)
+
+    return {"sin": sin, "cos": cos, "tan": tan}
 
 
 UNARY: dict[str, Callable[[float], float]] = {

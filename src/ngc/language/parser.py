@@ -9,6 +9,7 @@ messages are rs274's: overview.adoc "Format of a line", "Numbers", "Parameters",
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from types import MappingProxyType
 
 from ..errors import NgcError, NgcRuntimeError, NgcSyntaxError
@@ -37,17 +38,20 @@ _PROFILE_LETTERS = _LETTERS + "uw"  # a lathe cycle's profile: U, W are incremen
 # How rs274 names a repeated word that is not named by its letter.
 _WORD_NAMES = MappingProxyType({"$": "spindle choice ($)"})
 _LOWER = "abcdefghijklmnopqrstuvwxyz"
-# split_plain's tables: the bytes that end a number (a letter, or a byte that has no place in a
-# plain line: float() takes a form feed or \v as white space, rs274 does not), and the letters.
-_SKIPPED = "\t\n\r"
-_TO_SPACES = bytes(32 if chr(c).lower() in _LOWER or chr(c) == "_" or c == 127
-                   or (c < 32 and chr(c) not in _SKIPPED) else c for c in range(256))
-_LOWERED = bytes(ord(chr(c).lower()) if c < 128 else c for c in range(256))
-_NOT_LETTERS = bytes(c for c in range(256) if chr(c).lower() not in _LOWER)
-_N_WORD = re.compile(r"n(\d+)(?:\.\d*)?")
-_LINE_NUMBER = re.compile(rb"(\d+)(?:\.\d*)?")
 # Letters the fast path takes: plain real-valued words (no M, no integer words, no N/O).
 _FAST_LETTERS = frozenset("abcdefgijkpqrsxyz")  # not H L T: integers, checked as read
+# split_plain's tables (translations without deleted bytes: bytes.translate sets up a table of
+# its own for those, which costs more than the rest of the reading): the bytes that end a number,
+# as NUL (a letter, or a byte that has no place in a plain line: float() takes a form feed or \v
+# as white space, rs274 does not), and the letters the fast path takes (and N) lowered, every
+# other byte a space.
+_SKIPPED = "\t\n\r"
+_CUTS = bytes(0 if chr(c).lower() in _LOWER or chr(c) == "_" or c == 127
+              or (c < 32 and chr(c) not in _SKIPPED) else c for c in range(256))
+_LETTERS_ONLY = bytes(ord(chr(c).lower()) if chr(c).lower() in _FAST_LETTERS | {"n"} and c < 128
+                      else 32 for c in range(256))
+_N_WORD = re.compile(r"n(\d+)(?:\.\d*)?")
+_LINE_NUMBER = re.compile(rb"(\d+)(?:\.\d*)?")
 _NUMBER_TOKEN = re.compile(r"[-+]?[0-9.]*")
 _STRTOD = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)")
 _NAME_END = re.compile(r"[^a-z]")
@@ -178,30 +182,33 @@ def split_plain(text: str) -> tuple[dict[str, float], float | None, str | None] 
     """
     if not text.isascii():
         return None
-    # The text between the letters, and the letters: two byte translations, each dropping the
-    # spaces (cheaper than a regular expression).  A byte that has no place in a plain line
-    # ("_", a control character but the white space rs274 skips) cuts the line once more, so
-    # that it has not one number per letter.
+    # The text between the letters, spaces dropped, and the letters: two byte translations
+    # (cheaper than a regular expression).  A byte that has no place in a plain line ("_", a
+    # control character but the white space rs274 skips) cuts the line once more, a letter the
+    # fast path does not take is left out of the letters, and two letters with nothing between
+    # them read as one, so that such a line has not one number per letter.
     data = text.encode()
-    parts = data.translate(_TO_SPACES, b" ").split(b" ")
-    letters = data.translate(_LOWERED, _NOT_LETTERS).decode()
+    parts = data.translate(_CUTS).replace(b" ", b"").split(b"\0")
+    letters = data.translate(_LETTERS_ONLY).decode().split()
     if parts[0] or len(parts) != len(letters) + 1:
         return None
     digits = None
-    if letters[:1] == "n":
+    i = 1  # (parts[0] is empty)
+    if letters and letters[0] == "n":
         m = _LINE_NUMBER.fullmatch(parts[1])
         if m is None:
             return None
         digits = m.group(1).decode()
-        letters = letters[1:]
-        del parts[1]
-    del parts[0]
+        del letters[0]
+        i = 2
+    w = {}
     try:
-        # one number per letter
-        w = dict(zip(letters, map(float, parts)))  # noqa: B905 (a keyword costs a dict)
+        for letter in letters:  # one number per letter (cheaper than dict(zip(...)))
+            w[letter] = float(parts[i])
+            i += 1
     except ValueError:
         return None
-    if len(w) != len(letters) or not _FAST_LETTERS.issuperset(w):
+    if len(w) != len(letters) or "n" in w:
         return None
     return w, w.pop("g", None), digits
 
@@ -258,7 +265,7 @@ def raw_column(raw: str, index: int) -> int:
 class _Reader:
     """Reads the items of a normalized line, rs274's way (the general path)."""
 
-    __slots__ = ("block", "i", "letters", "read", "s", "table")
+    __slots__ = ("block", "i", "letters", "read", "s", "table", "trig")
 
     def __init__(self, text: str, block: Block, table: CodeTable = LINUXCNC) -> None:
         self.s = text
@@ -269,6 +276,8 @@ class _Reader:
         # The constant words read so far: rs274 raises a word's errors (a repeated letter, two
         # codes of one group) when it reads the word, before it reads what follows.
         self.read = Words()
+        # SIN, COS and TAN of this line (see expressions.trig_functions), made at the first.
+        self.trig: dict[str, Callable[[float], float]] | None = None
 
     def error(self, message: str, at: int | None = None) -> NgcSyntaxError:
         return NgcSyntaxError(message, column=(self.i if at is None else at) + 1)
@@ -490,6 +499,10 @@ class _Reader:
             if not s.startswith("[", self.i):
                 raise self.error("Left bracket missing after slash with atan")
             return ex.fold_binary_fn(ex.atan2_degrees, arg, self.read_expression())
+        if name in _TRIG:
+            if self.trig is None:
+                self.trig = ex.trig_functions()
+            return ex.fold_unary(self.trig[name], arg, check=True)
         return ex.fold_unary(ex.UNARY[name], arg, check=True)
 
     def read_exists(self) -> ex.Value:
@@ -532,6 +545,15 @@ class _Reader:
         closure, as in ``expressions.fold_*``: a shared helper would cost a call per read."""
         if self.s.startswith("<", self.i):
             name = self.read_name()
+            if not name.startswith("_"):
+
+                def local(p: ex.ParamContext) -> float:
+                    v = p.local(name)
+                    if v - v == 0.0:
+                        return v
+                    raise ex.nonfinite(v)
+
+                return local
 
             def named(p: ex.ParamContext) -> float:
                 v = p.named(name)
@@ -583,6 +605,7 @@ class _EagerReader(_Reader):
         return self.now(super().read_value())
 
 
+_TRIG = frozenset({"sin", "cos", "tan"})
 _FUNCTIONS = (
     "abs",
     "acos",
