@@ -117,6 +117,10 @@ def _facing_zeros(x_round: bool, z_by_x: bool) -> Callable[[float, float], tuple
     return zeros
 
 
+# how near a level's crossing with the profile is to where the tool is for it to be there (a
+# level through an arc's top meets it at a tangent, known to about the square root of EPS)
+_TOUCH = 1e-6
+
 MOVE, CORNER, CONT = 0, 1, 2  # a piece of the walk: a move, an arc rounding a corner, the
 # rest of an arc cut where it turns
 
@@ -305,8 +309,8 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                 x, z = fr.xz(level, cb)
                 # down along the profile (from a pocket's top: only where a line of the
                 # profile goes down from it)
-                if (tag == MOVE and seg.kind == LINE) or abs(x - out.x) > 1e-6 \
-                        or abs(z - out.z) > 1e-6:
+                here = abs(x - out.x) <= _TOUCH and abs(z - out.z) <= _TOUCH
+                if not here or (tag == MOVE and seg.kind == LINE):
                     _emit(out, seg._replace(x1=x, z1=z))
                 end = exit_b(level, cb)
                 if end is not None:
