@@ -213,30 +213,9 @@ def _round(x: float) -> float:
 
 # rs274 computes SIN, COS and TAN in x87 long double (see ngc/degrees.py); a zero angle keeps its
 # sign (SIN[-0] and TAN[-0] are -0), a NaN or infinite one gives NaN.
-def _sin(x: float) -> float:
-    if x - x != 0.0:
-        return math.nan
-    return x if x == 0.0 else degrees.sin_degrees(x)
-
-
-def _cos(x: float) -> float:
-    if x - x != 0.0:
-        return math.nan
-    return degrees.cos_degrees(x)
-
-
-def _tan(x: float) -> float:
-    if x - x != 0.0:
-        return math.nan
-    return x if x == 0.0 else degrees.tan_degrees(x)
-
-
-def trig_functions() -> dict[str, Callable[[float], float]]:
-    """SIN, COS and TAN as :data:`UNARY` has them, keeping the last angle's reduction
-    (:class:`ngc.degrees.Trig`): the parser gives the functions of one line one such set, so that
-    ``X[R * COS[A]] Y[R * SIN[A]]`` reduces A once."""
-    trig = degrees.Trig()
-    sin_, cos_, tan_ = trig.sin, trig.cos, trig.tan
+def _trig(sin_: Callable[[float], float], cos_: Callable[[float], float],
+          tan_: Callable[[float], float]) -> dict[str, Callable[[float], float]]:
+    """SIN, COS and TAN from functions of degrees that are finite and not zero."""
 
     def sin(x: float) -> float:
         if x - x != 0.0:
@@ -256,19 +235,30 @@ def trig_functions() -> dict[str, Callable[[float], float]]:
     return {"sin": sin, "cos": cos, "tan": tan}
 
 
+_DEGREE_TRIG = _trig(degrees.sin_degrees, degrees.cos_degrees, degrees.tan_degrees)
+
+
+def trig_functions() -> dict[str, Callable[[float], float]]:
+    """SIN, COS and TAN as :data:`UNARY` has them, keeping the last angle's reduction
+    (:class:`ngc.degrees.Trig`): the parser gives the functions of one line one such set, so that
+    ``X[R * COS[A]] Y[R * SIN[A]]`` reduces A once."""
+    trig = degrees.Trig()
+    return _trig(trig.sin, trig.cos, trig.tan)
+
+
 UNARY: dict[str, Callable[[float], float]] = {
     "abs": lambda x: -x if x < 0 else x,  # as rs274: ABS[-0] is -0
     "acos": _acos,
     "asin": _asin,
-    "cos": _cos,
+    "cos": _DEGREE_TRIG["cos"],
     "exp": _exp,
     "fix": _fix,
     "fup": _fup,
     "round": _round,
     "ln": _ln,
-    "sin": _sin,
+    "sin": _DEGREE_TRIG["sin"],
     "sqrt": _sqrt,
-    "tan": _tan,
+    "tan": _DEGREE_TRIG["tan"],
 }
 
 
