@@ -288,11 +288,15 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         _bridged(out, fr, walk, tags, ends, s, t)
         return
     top: float | None = None  # where the pocket being walked down began
-    for seg, tag in zip(walk, tags, strict=True):
+    # G7x.2 leaves uncut a pocket the profile goes down into from its first point
+    uncut = False
+    for i, (seg, tag) in enumerate(zip(walk, tags, strict=True)):
         a0 = fr.ab(seg.x0, seg.z0)[0]
         a1 = fr.ab(seg.x1, seg.z1)[0]
         down, deep = _depth(seg, fr, s)
-        if s * (deep - a0) > EPS:
+        if s * (deep - a0) > EPS and i == 0 and variant == 2:
+            uncut = True
+        if s * (deep - a0) > EPS and not uncut:
             # a pocket: passes at the levels the segment goes down through (G7x.2: from the
             # pocket's top down, the others: on the start's grid)
             if top is None:
@@ -323,6 +327,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                 k += 1
         if s * (a1 - deep) < -EPS:  # climbing at its end
             top = None
+            uncut = False
         _emit(out, seg)
     if closes:
         _emit(out, closing)
