@@ -17,6 +17,7 @@ from ...errors import NgcSemanticError
 from ...language import codes
 from ..lathe.corners import A_ZERO, BOTH_A_AND_C, round_corners
 from ..lathe.finishing import g70
+from ..lathe.offset import check_joinable
 from ..lathe.path import Out
 from ..lathe.profile import CCW, CW, LINE, NOT_MONOTONIC, Seg, steps
 from ..lathe.roughing import rough
@@ -95,6 +96,8 @@ def cycle(m: Machine, r: Words, code: int) -> None:
     profile, (file, line, source) = _record(m, w["q"], start)
     m.line = r_where[1]  # the label stays the one of the subroutine's last line, as in rs274
     try:
+        if code != 700 and w.get("d", 0.0):  # (before anything else, even an A of 0)
+            check_joinable(profile[1:])
         profile = round_corners(profile)
         if code == 700:  # (G70 takes a profile monotonic in Z or else in X)
             g70(out, profile, start, w.get("d", 0.0), w.get("e", 0.0), w.get("p", 1.0))

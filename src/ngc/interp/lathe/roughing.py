@@ -40,7 +40,7 @@ import math
 from collections.abc import Callable
 
 from .finishing import moved_with_corners
-from .offset import EPS, check_joinable, line_circle
+from .offset import EPS, line_circle
 from .path import Out
 from .profile import CCW, CW, LINE, Seg, within
 
@@ -202,8 +202,6 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         out.zeros = _turning_zeros(s > 0, t > 0)
     else:
         out.zeros = _facing_zeros(t > 0, s * t > 0)
-    if d:
-        check_joinable(rest)
     # A start ahead of the profile's first point along the cut starts from that point's b.
     if t * (sb - fb) > 0:
         sb = fb
