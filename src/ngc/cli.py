@@ -22,14 +22,16 @@ import argparse
 import gc
 import io
 import os
+import re
 import sys
 from collections.abc import Callable
 from typing import TextIO
 
-from . import __version__, rs274
+from . import __version__, engine, rs274
 from .canon.jsonl import JsonSink, dumps
 from .canon.ops import Sink
 from .canon.text import TextSink
+from .engine import output as engine_output
 from .errors import NgcConfigError, NgcError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
@@ -142,6 +144,13 @@ def build_parser() -> argparse.ArgumentParser:
         default="text",
         help="text: rs274's transcript format (default); json: JSON lines",
     )
+    canon.add_argument(
+        "--dialect",
+        choices=("linuxcnc", "engine"),
+        default=None,
+        help="the program's dialect: linuxcnc (default) or engine (seed 003's named codes and "
+        "engine segments); a first line '(dialect: engine)' selects engine too",
+    )
     canon.set_defaults(run=run_canon)
     check = sub.add_parser(
         "check", parents=[machine], help="validate programs and summarize their motion",
@@ -232,8 +241,49 @@ def _progress(name: str, handle: ProgramReader, *, output_to_terminal: bool) -> 
     return Progress(sys.stderr, name, descriptor(handle), active=active)
 
 
+_ENGINE_MARK = re.compile(r"\s*(?:\(\s*dialect\s*:\s*engine\s*\)|;\s*dialect\s*:\s*engine)\s*$",
+                          re.IGNORECASE)
+
+
+def _dialect(options: argparse.Namespace) -> str:
+    """The dialect asked for, or the one the program's first line names (a file, not stdin)."""
+    if options.dialect is not None or options.file == "-":
+        return str(options.dialect or "linuxcnc")
+    try:
+        with open(options.file, "rb") as f:
+            first = f.readline(4096).decode("utf-8", "replace")
+    except OSError:
+        return "linuxcnc"
+    return "engine" if _ENGINE_MARK.match(first) else "linuxcnc"
+
+
+def run_engine_canon(options: argparse.Namespace) -> int:
+    """``ngc canon --dialect engine FILE``: the engine dialect's operations, streamed."""
+    name = _name(options.file)
+    try:
+        if options.file == "-":
+            text = sys.stdin.buffer.read().decode("utf-8", "surrogateescape")
+        else:
+            with open(options.file, "rb") as f:
+                text = f.read().decode("utf-8", "surrogateescape")
+    except OSError as exc:
+        sys.stderr.write(f"ngc canon: cannot open {name}: {exc.strerror}\n")
+        return EXIT_USAGE
+    try:
+        engine_output.write(engine.run(text.removeprefix("\ufeff"), file=name), sys.stdout,
+                            options.format)
+    except NgcError as exc:
+        sys.stdout.flush()
+        sys.stderr.write(exc.render() + "\n")
+        return EXIT_PROGRAM_ERROR
+    sys.stdout.flush()
+    return EXIT_OK
+
+
 def run_canon(options: argparse.Namespace) -> int:
     """``ngc canon FILE``: interpreter start-up and program, streamed to stdout."""
+    if _dialect(options) == "engine":
+        return run_engine_canon(options)
     try:
         machine, setup = _setup("canon", options)
     except NgcConfigError as exc:

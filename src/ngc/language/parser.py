@@ -624,6 +624,16 @@ _FUNCTIONS = (
 )
 
 
+def read_value(text: str) -> ex.Value:
+    """The real value that is the whole of ``text`` (lower case, no white space): a number,
+    ``[expression]``, ``#parameter`` or function call."""
+    reader = _Reader(text, Block(0, text))
+    value = reader.read_value()
+    if reader.i != len(text):
+        raise NgcSyntaxError(f"Bad expression '{text}'", column=reader.i + 1)
+    return value
+
+
 def check_index(value: float) -> int:
     """A parameter number: close to an integer and in 1..MAX_PARAMETER (rs274's checks)."""
     k = integer_value(value)
