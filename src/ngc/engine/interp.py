@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
@@ -18,7 +18,7 @@ from ..language import expressions as ex
 from ..language.parser import read_value
 from . import bezier
 from .bezier import Cubic
-from .names import MOVE, split_name
+from .names import MOVE, NAMES, split_name
 
 EngineError = NgcSemanticError
 
@@ -33,7 +33,6 @@ _POLAR_DEFAULTS = {"PZ": ("VZ", "VX"), "PX": ("VX", "VY"), "PY": ("VY", "VZ")}
 RAPID_LINEAR_MM_S = 25.0
 RAPID_ROTARY_DEG_S = 360.0
 _ROTARY = {3, 4, 5}
-_LINEAR_XYZ = (0, 1, 2)
 # the codes the seed lists that ngc does not run yet in this dialect
 _NOT_YET = {2, 3, 15, 16, 31, 43, 49, 53, 54, 55, 56, 57, 58, 59, 73, 80, 81, 82, 83, 85, 86, 89,
             100}
@@ -223,17 +222,16 @@ Piece = dict[int, Cubic]
 
 class _Clause(NamedTuple):
     segments: int  # how many it needs
-    piece: object  # Callable[[float, float], Piece]
+    piece: Callable[[float, float], Piece]
 
 
 def _axis_clause(eng: Engine, axes: dict[int, float], values: list[float],
                  start_along: float | None) -> _Clause:
     """An axis (``axes`` = {k: 1}) or a vector's axes (their scales): 1 value, constant speed;
     3 values, the Bézier's inner control points and its end."""
-    base = start_along if start_along is not None else None
     cps: dict[int, Cubic] = {}
     for k, scale in axes.items():
-        origin = (base if base is not None else eng.pos[k]) if eng.absolute else 0.0
+        origin = (start_along if start_along is not None else eng.pos[k]) if eng.absolute else 0.0
         if len(values) == 1:
             d = (values[0] - origin) * scale
             cps[k] = (0.0, d / 3.0, 2.0 * d / 3.0, d)
@@ -340,12 +338,14 @@ def _motion(eng: Engine, line: int, code: int, clauses: list[tuple[str, list[flo
         t0, t1 = j / count, (j + 1) / count
         total = {}
         for c in made:
-            for k, cub in c.piece(t0, t1).items():  # type: ignore[operator]
+            for k, cub in c.piece(t0, t1).items():
                 acc = total.setdefault(k, [0.0, 0.0, 0.0, 0.0])
                 for i in range(4):
                     acc[i] += cub[i]
-        axes = {AXES[k]: tuple(start[k] + v for v in acc) for k, acc in sorted(total.items())}
-        yield EngineSegment(line, _duration(eng, code, axes), axes)  # type: ignore[arg-type]
+        axes: dict[str, Cubic] = {
+            AXES[k]: (start[k] + acc[0], start[k] + acc[1], start[k] + acc[2], start[k] + acc[3])
+            for k, acc in sorted(total.items())}
+        yield EngineSegment(line, _duration(eng, code, axes), axes)
     for k, acc in total.items():
         eng.pos[k] = start[k] + acc[3]
     eng.along.update(ends)
@@ -353,14 +353,11 @@ def _motion(eng: Engine, line: int, code: int, clauses: list[tuple[str, list[flo
 
 def _duration(eng: Engine, code: int, axes: dict[str, Cubic]) -> float:
     if code == 1:
-        linear = [axes[a] for a in "XYZ" if a in axes]
-        dist = bezier.length(linear) if linear else 0.0
-        if dist == 0.0:
-            others = [axes[a] for a in "UVW" if a in axes]
-            dist = bezier.length(others) if others else 0.0
-        if dist == 0.0:
-            others = [axes[a] for a in "ABC" if a in axes]
-            dist = bezier.length(others) if others else 0.0
+        dist = 0.0
+        for group in ("XYZ", "UVW", "ABC"):  # the first group that moves
+            dist = bezier.length([axes[a] for a in group if a in axes])
+            if dist:
+                break
         assert eng.feed is not None
         per_second = eng.feed if eng.metric else eng.feed / 60.0
         return dist / per_second
@@ -542,13 +539,7 @@ def _line(eng: Engine, n: int, raw: str) -> Iterator[Op]:
         yield from _setting(eng, n, code, rest)
 
 
-def _known() -> set[int]:
-    from .names import NAMES
-
-    return set(NAMES)
-
-
-_KNOWN = _known()
+_KNOWN = set(NAMES)
 
 
 def run(text: str, engine: Engine | None = None, file: str | None = None) -> Iterator[Op]:
