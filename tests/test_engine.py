@@ -196,5 +196,5 @@ def test_cli_canon_engine(tmp_path, capsys) -> None:  # type: ignore[no-untyped-
     plain.write_text("rapid X 1\nfrobnicate\n")
     assert main(["canon", "--dialect", "engine", str(plain)]) == 1
     captured = capsys.readouterr()
-    assert captured.out.startswith("ENGINE_SEGMENT(line=1, duration=0.040000, X=[0.000000")
+    assert captured.out.startswith("ENGINE_SEGMENT(line=1, motion=rapid, duration=0.040000, X=[0.000000")
     assert "plain.ngc:2:1: Unknown name 'frobnicate'" in captured.err

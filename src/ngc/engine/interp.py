@@ -41,11 +41,13 @@ _REFERENCE = re.compile(r"(V[XYZABCUVW]|P[XYZ]|[XYZABCUVWFP])(?![A-Z])", re.IGNO
 
 class EngineSegment(NamedTuple):
     """Per axis, the four control points of a cubic Bézier of its position over the segment's
-    normalised time; ``duration`` in seconds."""
+    normalised time; ``duration`` in seconds; ``motion`` the kind of move it belongs to: "rapid"
+    (G0), "feed" (G1), "arc" (G2/G3), "probe" (G31) or "run" (axes at constant speed, G100)."""
 
     line: int
     duration: float
     axes: dict[str, Cubic]
+    motion: str = "feed"
 
 
 class Dwell(NamedTuple):
@@ -345,7 +347,7 @@ def _motion(eng: Engine, line: int, code: int, clauses: list[tuple[str, list[flo
         axes: dict[str, Cubic] = {
             AXES[k]: (start[k] + acc[0], start[k] + acc[1], start[k] + acc[2], start[k] + acc[3])
             for k, acc in sorted(total.items())}
-        yield EngineSegment(line, _duration(eng, code, axes), axes)
+        yield EngineSegment(line, _duration(eng, code, axes), axes, "rapid" if code == 0 else "feed")
     for k, acc in total.items():
         eng.pos[k] = start[k] + acc[3]
     eng.along.update(ends)

@@ -11,7 +11,8 @@ from .interp import Dwell, EngineSegment, Op
 
 def as_dict(op: Op) -> dict[str, object]:
     if isinstance(op, EngineSegment):
-        return {"op": "ENGINE_SEGMENT", "line": op.line, "duration": op.duration,
+        return {"op": "ENGINE_SEGMENT", "line": op.line, "motion": op.motion,
+                "duration": op.duration,
                 "axes": {a: list(c) for a, c in op.axes.items()}}
     if isinstance(op, Dwell):
         return {"op": "DWELL", "line": op.line, "seconds": op.seconds}
@@ -25,7 +26,8 @@ def _number(x: float) -> str:
 def as_text(op: Op) -> str:
     if isinstance(op, EngineSegment):
         axes = ", ".join(f"{a}=[{', '.join(_number(v) for v in c)}]" for a, c in op.axes.items())
-        return f"ENGINE_SEGMENT(line={op.line}, duration={_number(op.duration)}, {axes})"
+        return (f"ENGINE_SEGMENT(line={op.line}, motion={op.motion}, duration="
+                f"{_number(op.duration)}, {axes})")
     if isinstance(op, Dwell):
         return f"DWELL(line={op.line}, seconds={_number(op.seconds)})"
     return f"{op.name}(line={op.line}, {json.dumps(op.value)})"
