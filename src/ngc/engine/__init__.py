@@ -8,5 +8,6 @@ dialect as ngc implements it.
 """
 
 from .interp import Dwell, Engine, EngineError, EngineSegment, ModeChange, run
+from .setup import Setup, read_setup
 
-__all__ = ["Dwell", "Engine", "EngineError", "EngineSegment", "ModeChange", "run"]
+__all__ = ["Dwell", "Engine", "EngineError", "EngineSegment", "ModeChange", "Setup", "read_setup", "run"]

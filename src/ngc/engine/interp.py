@@ -19,6 +19,7 @@ from ..language.parser import read_value
 from . import bezier
 from .bezier import Cubic
 from .names import MOVE, NAMES, split_name
+from .setup import Setup
 
 EngineError = NgcSemanticError
 
@@ -121,6 +122,7 @@ class Engine:
     polars: dict[str, Polar] = field(default_factory=dict)
     drill: str = "VZ"
     params: _Params = field(default_factory=_Params)
+    setup: Setup = field(default_factory=Setup)
 
     def __post_init__(self) -> None:
         self.reset_transforms()
