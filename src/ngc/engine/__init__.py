@@ -7,7 +7,8 @@ Bézier of position over the segment's time, and a duration).
 dialect as ngc implements it.
 """
 
-from .interp import Dwell, Engine, EngineError, EngineSegment, ModeChange, run
+from .interp import Dwell, Engine, EngineError, EngineSegment, ModeChange, Op, Stop, run
 from .setup import Setup, read_setup
 
-__all__ = ["Dwell", "Engine", "EngineError", "EngineSegment", "ModeChange", "Setup", "read_setup", "run"]
+__all__ = ["Dwell", "Engine", "EngineError", "EngineSegment", "ModeChange", "Op", "Setup", "Stop",
+           "read_setup", "run"]

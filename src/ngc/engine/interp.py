@@ -1,381 +1,43 @@
 """Running an engine-dialect program: lines to engine segments and the other operations.
 
-Positions are program positions in program units (no fixture offsets yet); a motion's clauses each
-give a displacement over the move's normalised time t in [0, 1] and the displacements add.  See
-``docs/engine-dialect.md`` for every decision the seed leaves open.
+A line holds one code, by number or by name, and its clauses; ``docs/engine-dialect.md`` gives
+every decision the seed leaves open.
 """
 
 from __future__ import annotations
 
 import math
 import re
-from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
-from typing import NamedTuple
+from collections.abc import Iterator
 
 from ..errors import NgcRuntimeError, NgcSemanticError, NgcSyntaxError
-from ..language import expressions as ex
-from ..language.parser import read_value
-from . import bezier
-from .bezier import Cubic
+from . import cycles, motion
 from .names import MOVE, NAMES, split_name
-from .setup import Setup
-
-EngineError = NgcSemanticError
-
-AXES = "XYZABCUVW"
-_AXIS = {a: i for i, a in enumerate(AXES)}
-VECTORS = tuple("V" + a for a in AXES)
-POLARS = ("PX", "PY", "PZ")
-# polar transform -> (normal, zero) by default (the issue's defaults)
-_POLAR_DEFAULTS = {"PZ": ("VZ", "VX"), "PX": ("VX", "VY"), "PY": ("VY", "VZ")}
-# rapid rates: program units per second for the linear axes at G21 (mm/s), degrees per second for
-# the rotary ones
-RAPID_LINEAR_MM_S = 25.0
-RAPID_ROTARY_DEG_S = 360.0
-_ROTARY = {3, 4, 5}
-# the codes the seed lists that ngc does not run yet in this dialect
-_NOT_YET = {2, 3, 15, 16, 31, 43, 49, 53, 54, 55, 56, 57, 58, 59, 73, 80, 81, 82, 83, 85, 86, 89,
-            100}
-_REFERENCE = re.compile(r"(V[XYZABCUVW]|P[XYZ]|[XYZABCUVWFP])(?![A-Z])", re.IGNORECASE)
-
-
-class EngineSegment(NamedTuple):
-    """Per axis, the four control points of a cubic Bézier of its position over the segment's
-    normalised time; ``duration`` in seconds; ``motion`` the kind of move it belongs to: "rapid"
-    (G0), "feed" (G1), "arc" (G2/G3), "probe" (G31) or "run" (axes at constant speed, G100)."""
-
-    line: int
-    duration: float
-    axes: dict[str, Cubic]
-    motion: str = "feed"
-
-
-class Dwell(NamedTuple):
-    line: int
-    seconds: float
-
-
-class ModeChange(NamedTuple):
-    """A setting that moves nothing: ``name`` (UNITS, PLANE, DISTANCE, EXACT_STOP, FEED_RATE,
-    SET_POSITION, DRILL_VECTOR) and its new value."""
-
-    line: int
-    name: str
-    value: object
-
-
-Op = EngineSegment | Dwell | ModeChange
-
-
-@dataclass
-class Polar:
-    normal: str
-    zero: str
-    centre: list[float] | None = None
-    radius: float = 0.0
-
-
-class _Params:
-    """Parameters by number or name, for expressions."""
-
-    def __init__(self) -> None:
-        self.numbered: dict[int, float] = {}
-        self.names: dict[str, float] = {}
-
-    def num(self, index: int) -> float:
-        return self.numbered.get(index, 0.0)
-
-    def named(self, name: str) -> float:
-        if name not in self.names:
-            raise NgcRuntimeError(f"Named parameter #<{name}> not defined")
-        return self.names[name]
-
-    def local(self, name: str) -> float:
-        return self.named(name)
-
-    def exists(self, name: str) -> bool:
-        return name in self.names
-
-    def index(self, value: float) -> int:
-        return round(value)
-
-
-def _unit(k: int) -> list[float]:
-    v = [0.0] * 9
-    v[k] = 1.0
-    return v
-
-
-@dataclass
-class Engine:
-    """The dialect's machine state."""
-
-    pos: list[float] = field(default_factory=lambda: [0.0] * 9)
-    metric: bool = True
-    absolute: bool = True
-    motion: int = 0
-    feed: float | None = None
-    plane: str = "XY"
-    vectors: dict[str, list[float]] = field(default_factory=dict)
-    along: dict[str, float] = field(default_factory=dict)
-    polars: dict[str, Polar] = field(default_factory=dict)
-    drill: str = "VZ"
-    params: _Params = field(default_factory=_Params)
-    setup: Setup = field(default_factory=Setup)
-
-    def __post_init__(self) -> None:
-        self.reset_transforms()
-
-    def reset_transforms(self) -> None:
-        """G69: every vector and polar transform back to its default."""
-        self.vectors = {name: _unit(k) for k, name in enumerate(VECTORS)}
-        self.along = dict.fromkeys(VECTORS, 0.0)
-        self.polars = {p: Polar(*_POLAR_DEFAULTS[p]) for p in POLARS}
-
-    # -- polar geometry -----------------------------------------------------------------------
-    def frame(self, polar: str) -> tuple[list[float], list[float], list[float]]:
-        """(normal, zero, quarter): the polar transform's axis, its zero-degree direction and the
-        direction at 90 degrees (normal x zero, on X Y Z)."""
-        p = self.polars[polar]
-        n, z = self.vectors[p.normal], self.vectors[p.zero]
-        q = [0.0] * 9
-        q[0] = n[1] * z[2] - n[2] * z[1]
-        q[1] = n[2] * z[0] - n[0] * z[2]
-        q[2] = n[0] * z[1] - n[1] * z[0]
-        return n, z, q
-
-
-def _direction(z: list[float], q: list[float], degrees: float) -> list[float]:
-    a = math.radians(degrees)
-    c, s = math.cos(a), math.sin(a)
-    return [c * zi + s * qi for zi, qi in zip(z, q, strict=True)]
-
-
-# ---- reading ------------------------------------------------------------------------------------
-
-
-def _strip(raw: str) -> str:
-    """The line without its comments (``( ... )`` and from ``;`` on)."""
-    text = re.sub(r"\([^)]*\)", " ", raw)
-    return text.split(";", 1)[0].strip()
-
-
-def _tokens(text: str) -> list[str]:
-    """Words separated by white space or commas; a bracket keeps its inside together, and a
-    reference written against its first expression (``X2``, ``PZ-1``) is split from it."""
-    out: list[str] = []
-    cur = ""
-    depth = 0
-    for c in text:
-        if depth == 0 and (c.isspace() or c == ","):
-            if cur:
-                out.append(cur)
-            cur = ""
-            continue
-        depth += (c == "[") - (c == "]")
-        cur += c
-    if cur:
-        out.append(cur)
-    split: list[str] = []
-    for tok in out:
-        m = _REFERENCE.match(tok)
-        if m is not None and m.end() < len(tok) and tok[m.end()] in "0123456789.+-#[":
-            split += [tok[: m.end()], tok[m.end():]]
-        else:
-            split.append(tok)
-    return split
-
-
-def _value(token: str, params: _Params) -> float:
-    try:
-        value = read_value(re.sub(r"\s+", "", token.lower()))
-    except NgcSyntaxError:
-        raise
-    except Exception as exc:  # (a token the reader cannot take)
-        raise NgcSyntaxError(f"Bad expression '{token}'") from exc
-    return ex.evaluate(value, params)
-
-
-def _reference(token: str) -> str | None:
-    up = token.upper()
-    if up in _AXIS or up in VECTORS or up in POLARS or up in ("F", "P"):
-        return up
-    return None
-
-
-def _clauses(tokens: list[str], params: _Params) -> list[tuple[str, list[float]]]:
-    """``[(reference, values), ...]`` in order."""
-    out: list[tuple[str, list[float]]] = []
-    for tok in tokens:
-        ref = _reference(tok)
-        if ref is not None:
-            out.append((ref, []))
-        elif not out:
-            raise NgcSyntaxError(f"Expression '{tok}' before any reference")
-        else:
-            out[-1][1].append(_value(tok, params))
-    return out
-
-
-# ---- motion -------------------------------------------------------------------------------------
-
-# a clause as the pieces it gives over [t0, t1]: axis index -> cubic of displacement
-Piece = dict[int, Cubic]
-
-
-class _Clause(NamedTuple):
-    segments: int  # how many it needs
-    piece: Callable[[float, float], Piece]
-
-
-def _axis_clause(eng: Engine, axes: dict[int, float], values: list[float],
-                 start_along: float | None) -> _Clause:
-    """An axis (``axes`` = {k: 1}) or a vector's axes (their scales): 1 value, constant speed;
-    3 values, the Bézier's inner control points and its end."""
-    cps: dict[int, Cubic] = {}
-    for k, scale in axes.items():
-        origin = (start_along if start_along is not None else eng.pos[k]) if eng.absolute else 0.0
-        if len(values) == 1:
-            d = (values[0] - origin) * scale
-            cps[k] = (0.0, d / 3.0, 2.0 * d / 3.0, d)
-        else:
-            e1, e2, e3 = ((v - origin) * scale for v in values)
-            cps[k] = (0.0, e1, e2, e3)
-
-    def piece(t0: float, t1: float) -> Piece:
-        return {k: bezier.part(c, t0, t1) for k, c in cps.items()}
-
-    return _Clause(1, piece)
-
-
-def _polar_point(eng: Engine, name: str, values: list[float]) -> _Clause:
-    p = eng.polars[name]
-    if p.centre is None:
-        raise EngineError(f"{name} has no centre: set one with G103 (set polar center)")
-    n, z, q = eng.frame(name)
-    angle = values[0]
-    radius = values[1] if len(values) > 1 else p.radius
-    offset = values[2] if len(values) > 2 else 0.0
-    p.radius = radius
-    u = _direction(z, q, angle)
-    target = [c + radius * ui + offset * ni for c, ui, ni in zip(p.centre, u, n, strict=True)]
-    disp = {k: target[k] - eng.pos[k] for k in range(9) if target[k] != eng.pos[k]}
-
-    def piece(t0: float, t1: float) -> Piece:
-        return {k: bezier.line(d, t0, t1) for k, d in disp.items()}
-
-    return _Clause(1, piece)
-
-
-def _arc_count(sweep: float, radius: float) -> int:
-    """Segments for an arc: at most 90 degrees each; over a radius of 1 the radius times the
-    angle decides (the seed)."""
-    size = abs(sweep) * max(1.0, abs(radius))
-    return max(1, math.ceil(size / 90.0 - 1e-9))
-
-
-def _polar_arc(eng: Engine, name: str, values: list[float]) -> _Clause:
-    a0, a1, radius, offset = values
-    eng.polars[name].radius = radius
-    n, z, q = eng.frame(name)
-    sweep = a1 - a0
-    u0 = _direction(z, q, a0)
-    moving = [k for k in range(9) if z[k] or q[k] or (offset and n[k])]
-
-    def piece(t0: float, t1: float) -> Piece:
-        b0, b1 = a0 + sweep * t0, a0 + sweep * t1
-        ua, ub = _direction(z, q, b0), _direction(z, q, b1)
-        k_ = bezier.quarter_factor(math.radians(b1 - b0)) * radius
-        ra, rb = math.radians(b0), math.radians(b1)
-        ta = [-math.sin(ra) * zi + math.cos(ra) * qi for zi, qi in zip(z, q, strict=True)]
-        tb = [-math.sin(rb) * zi + math.cos(rb) * qi for zi, qi in zip(z, q, strict=True)]
-        out: Piece = {}
-        for k in moving:
-            p0 = radius * (ua[k] - u0[k])
-            p3 = radius * (ub[k] - u0[k])
-            c = (p0, p0 + k_ * ta[k], p3 - k_ * tb[k], p3)
-            h = bezier.line(offset * n[k], t0, t1)
-            out[k] = (c[0] + h[0], c[1] + h[1], c[2] + h[2], c[3] + h[3])
-        return out
-
-    return _Clause(_arc_count(sweep, radius), piece)
-
-
-def _motion(eng: Engine, line: int, code: int, clauses: list[tuple[str, list[float]]]
-            ) -> Iterator[Op]:
-    made: list[_Clause] = []
-    ends: dict[str, float] = {}
-    for ref, values in clauses:
-        if ref == "F":
-            if len(values) != 1:
-                raise EngineError(f"F takes 1 expression, not {len(values)}")
-            eng.feed = values[0]
-            yield ModeChange(line, "FEED_RATE", values[0])
-        elif ref in _AXIS or ref in VECTORS:
-            if len(values) not in (1, 3):
-                raise EngineError(f"{ref} takes 1 or 3 expressions, not {len(values)}")
-            if ref in _AXIS:
-                made.append(_axis_clause(eng, {_AXIS[ref]: 1.0}, values, None))
-            else:
-                vec = eng.vectors[ref]
-                scales = {k: s for k, s in enumerate(vec) if s}
-                made.append(_axis_clause(eng, scales, values, eng.along[ref]))
-                last = values[-1]
-                ends[ref] = last if eng.absolute else ends.get(ref, eng.along[ref]) + last
-        elif ref in POLARS:
-            if not 1 <= len(values) <= 4:
-                raise EngineError(f"{ref} takes 1 to 4 expressions, not {len(values)}")
-            made.append(_polar_arc(eng, ref, values) if len(values) == 4
-                        else _polar_point(eng, ref, values))
-        else:
-            raise EngineError(f"{ref} is not a reference of a motion")
-    if not made:
-        return
-    if code == 1 and not eng.feed:
-        raise EngineError("G1 (feed) with no feed rate: set one with F")
-    count = max(c.segments for c in made)
-    # the pieces are displacements from the move's start: positions from where it began
-    start = list(eng.pos)
-    total: dict[int, list[float]] = {}
-    for j in range(count):
-        t0, t1 = j / count, (j + 1) / count
-        total = {}
-        for c in made:
-            for k, cub in c.piece(t0, t1).items():
-                acc = total.setdefault(k, [0.0, 0.0, 0.0, 0.0])
-                for i in range(4):
-                    acc[i] += cub[i]
-        axes: dict[str, Cubic] = {
-            AXES[k]: (start[k] + acc[0], start[k] + acc[1], start[k] + acc[2], start[k] + acc[3])
-            for k, acc in sorted(total.items())}
-        yield EngineSegment(line, _duration(eng, code, axes), axes, "rapid" if code == 0 else "feed")
-    for k, acc in total.items():
-        eng.pos[k] = start[k] + acc[3]
-    eng.along.update(ends)
-
-
-def _duration(eng: Engine, code: int, axes: dict[str, Cubic]) -> float:
-    if code == 1:
-        dist = 0.0
-        for group in ("XYZ", "UVW", "ABC"):  # the first group that moves
-            dist = bezier.length([axes[a] for a in group if a in axes])
-            if dist:
-                break
-        assert eng.feed is not None
-        per_second = eng.feed if eng.metric else eng.feed / 60.0
-        return dist / per_second
-    # rapid: the slowest axis at its own rate decides
-    worst = 0.0
-    for a, c in axes.items():
-        k = _AXIS[a]
-        rate = RAPID_ROTARY_DEG_S if k in _ROTARY else (
-            RAPID_LINEAR_MM_S if eng.metric else RAPID_LINEAR_MM_S / 25.4)
-        worst = max(worst, bezier.length([c]) / rate)
-    return worst
-
-
-# ---- the other codes ----------------------------------------------------------------------------
+from .reading import Clauses, clauses, reference, single, strip, tokens, value
+from .state import (
+    AXES,
+    AXIS,
+    PLANES,
+    POLARS,
+    VECTORS,
+    Cycle,
+    Dwell,
+    Engine,
+    EngineError,
+    EngineSegment,
+    ModeChange,
+    Op,
+    PolarMode,
+    Stop,
+    direction,
+)
+
+__all__ = ["Dwell", "Engine", "EngineError", "EngineSegment", "ModeChange", "Op", "Stop", "run"]
+
+_WHAT = {4: "G4 (dwell)", 15: "G15 (cancel polar coordinates)", 16: "G16 (set polar origin)",
+         43: "G43 (apply tool length offset)", 49: "G49 (cancel tool length offset)",
+         80: "G80 (cancel fixed cycles)", 92: "G92 (preset)", 100: "G100 (run)"}
+_MOTION = {0: "rapid", 1: "feed", 31: "probe"}
 
 
 def _vector_name(tok: str) -> str:
@@ -392,89 +54,192 @@ def _polar_name(tok: str) -> str:
     return up
 
 
-def _args(tokens: list[str], n: int, what: str) -> None:
-    if len(tokens) < n:
-        raise EngineError(f"{what} needs {n} arguments, not {len(tokens)}")
+def _args(words: list[str], n: int, what: str) -> None:
+    if len(words) < n:
+        raise EngineError(f"{what} needs {n} arguments, not {len(words)}")
 
 
-def _setting(eng: Engine, line: int, code: int, tokens: list[str]) -> Iterator[Op]:
+def _axes_only(eng: Engine, words: list[str], what: str) -> dict[int, float]:
+    """Axis letters each with one value (program values), as ``{axis: value}``."""
+    out: dict[int, float] = {}
+    for ref, values in clauses(words, eng.params):
+        if ref not in AXIS:
+            raise EngineError(f"{what} takes axes each with one value, not {ref}")
+        out[AXIS[ref]] = single(ref, values, what)
+    return out
+
+
+def _no_arguments(code: int, words: list[str]) -> None:
+    if words:
+        what = _WHAT.get(code, f"G{code}")
+        raise EngineError(f"{what} takes no arguments, not '{' '.join(words)}'")
+
+
+def _moving(eng: Engine, line: int, code: int, words: list[str]) -> Iterator[Op]:
+    """G0, G1, G31: a move made of the line's clauses."""
+    kind = _MOTION[code]
+    made, ends, ops = motion.clauses_of(eng, line, clauses(words, eng.params), f"G{code}")
+    yield from ops
+    yield from motion.segments(eng, line, made, kind)
+    eng.along.update(ends)
+    if code == 31:
+        # no probe input in a simulation: the move runs to its end
+        eng.params.names["__probe_stop"] = 0.0
+
+
+def _dwell(eng: Engine, line: int, words: list[str]) -> Iterator[Op]:
+    """G4: P seconds (or the number alone); running axes (G100) run on through it."""
     p = eng.params
-    if code == 4:
-        clauses = _clauses(tokens, p) if tokens and _reference(tokens[0]) else [
-            ("P", [_value(t, p) for t in tokens])]
-        values = [v for ref, vs in clauses if ref == "P" for v in vs]
-        if len(values) > 1 or any(ref != "P" for ref, _ in clauses):
-            raise EngineError("G4 (dwell) takes one time in seconds (P)")
-        yield Dwell(line, values[0] if values else 0.0)
-    elif code in (17, 18, 19):
+    found = clauses(words, p) if words and reference(words[0]) else [
+        ("P", [value(t, p) for t in words])]
+    values = [v for ref, vs in found if ref == "P" for v in vs]
+    if len(values) > 1 or any(ref != "P" for ref, _ in found):
+        raise EngineError("G4 (dwell) takes one time in seconds (P)")
+    seconds = values[0] if values else 0.0
+    if seconds < 0.0:
+        raise EngineError("G4 (dwell): the time must not be negative")
+    if eng.running and seconds > 0.0:
+        yield from motion.timed(eng, line, {}, seconds, "run")
+    else:
+        yield Dwell(line, seconds)
+
+
+def _polar_on(eng: Engine, line: int, words: list[str]) -> Iterator[Op]:
+    """G16: polar coordinates from an origin fixed in machine position; X Y Z name it (the
+    current position for the others), through the polar translation if G16 is already on."""
+    what = _WHAT[16]
+    found = clauses(words, eng.params)
+    prog = eng.program()
+    origin = list(eng.pos)
+    offsets = eng.offsets()
+    first, second, _ = PLANES[eng.plane]
+    if eng.polar_mode is not None:
+        rest, made = motion.polar_coordinates(eng, found)
+        if made:
+            disp = made[0].piece(0.0, 1.0)
+            for k, c in disp.items():
+                origin[k] = eng.pos[k] + c[3]
+        found = rest
+    for ref, values in found:
+        if ref not in ("X", "Y", "Z"):
+            raise EngineError(f"{what} takes X Y Z each with one value, not {ref}")
+        k = AXIS[ref]
+        origin[k] = single(ref, values, what) * eng.unit(k) + (
+            offsets[k] if eng.absolute else prog[k] + offsets[k])
+    dx, dy = eng.pos[first] - origin[first], eng.pos[second] - origin[second]
+    eng.polar_mode = PolarMode(origin, math.hypot(dx, dy), math.degrees(math.atan2(dy, dx)))
+    yield ModeChange(line, "POLAR_COORDINATES",
+                     {AXES[k]: eng.shown(k, origin[k]) for k in range(3)})
+
+
+def _run_axes(eng: Engine, line: int, words: list[str]) -> Iterator[Op]:
+    """G100: axes at constant speed, as percentages of their maximum speeds (0 stops)."""
+    for k, percent in _axes_only(eng, words, _WHAT[100]).items():
+        if abs(percent) > 100.0:
+            raise EngineError(f"G100 (run): {AXES[k]} at {percent:g}% is over its maximum speed")
+        if percent:
+            eng.running[k] = percent / 100.0 * eng.setup.max_speed[k]
+        else:
+            eng.running.pop(k, None)
+    yield motion.run_change(eng, line)
+
+
+def _setting(eng: Engine, line: int, code: int, words: list[str]) -> Iterator[Op]:
+    p = eng.params
+    if code in (17, 18, 19):
         eng.plane = {17: "XY", 18: "ZX", 19: "YZ"}[code]
         yield ModeChange(line, "PLANE", eng.plane)
     elif code in (20, 21):
         eng.metric = code == 21
         yield ModeChange(line, "UNITS", "mm" if eng.metric else "inch")
+    elif code == 15:
+        eng.polar_mode = None
+        yield ModeChange(line, "POLAR_COORDINATES", None)
+    elif code == 43:
+        eng.tool_length()  # the setup must give one
+        eng.tool_offset = True
+        yield _tool_change(eng, line)
+    elif code == 49:
+        eng.tool_offset = False
+        yield _tool_change(eng, line)
+    elif 53 <= code <= 59:
+        eng.fixture = code - 53
+        yield ModeChange(line, "FIXTURE", eng.fixture)
     elif code in (61, 64):
-        yield ModeChange(line, "EXACT_STOP", code == 61)
+        eng.exact = code == 61
+        yield ModeChange(line, "EXACT_STOP", eng.exact)
     elif code == 69:
         eng.reset_transforms()
         yield ModeChange(line, "TRANSFORMS", "default")
+    elif code == 80:
+        eng.cycle = Cycle()
+        yield ModeChange(line, "CYCLE", None)
     elif code in (90, 91):
         eng.absolute = code == 90
         yield ModeChange(line, "DISTANCE", "absolute" if eng.absolute else "incremental")
     elif code == 92:
-        for ref, values in _clauses(tokens, p):
-            if ref not in _AXIS or len(values) != 1:
-                raise EngineError("G92 (preset) takes axes each with one value")
-            eng.pos[_AXIS[ref]] = values[0]
-        yield ModeChange(line, "SET_POSITION", dict(zip(AXES, eng.pos, strict=True)))
+        offsets = eng.offsets()
+        for k, v in _axes_only(eng, words, _WHAT[92]).items():
+            eng.pos[k] = v * eng.unit(k) + offsets[k]
+        yield ModeChange(line, "SET_POSITION",
+                         {a: eng.shown(k, eng.pos[k]) for k, a in enumerate(AXES)})
     elif code == 101:
-        _args(tokens, 3, "G101 (rotate vectors)")
-        normal = list(eng.vectors[_vector_name(tokens[0])])
-        angle = math.radians(_value(tokens[1], p))
-        for tok in tokens[2:]:
+        _args(words, 3, "G101 (rotate vectors)")
+        normal = list(eng.vectors[_vector_name(words[0])])
+        angle = math.radians(value(words[1], p))
+        for tok in words[2:]:
             name = _vector_name(tok)
             eng.vectors[name] = _rotated(eng.vectors[name], normal, angle)
         yield ModeChange(line, "VECTORS", {v: list(eng.vectors[v]) for v in VECTORS})
     elif code == 102:
-        _args(tokens, 3, "G102 (set vector)")
-        name = _vector_name(tokens[0])
+        _args(words, 3, "G102 (set vector)")
+        name = _vector_name(words[0])
         vec = [0.0] * 9
-        for ref, values in _clauses(tokens[1:], p):
-            if ref not in _AXIS or len(values) != 1:
-                raise EngineError("G102 (set vector) takes axis names each with one scale")
-            vec[_AXIS[ref]] = values[0]
+        for k, scale in _axes_only(eng, words[1:], "G102 (set vector)").items():
+            vec[k] = scale
         eng.vectors[name] = vec
         yield ModeChange(line, "VECTORS", {name: vec})
     elif code == 103:
-        _args(tokens, 3, "G103 (set polar center)")
-        name = _polar_name(tokens[0])
-        angle, radius = _value(tokens[1], p), _value(tokens[2], p)
-        offset = _value(tokens[3], p) if len(tokens) > 3 else 0.0
+        _args(words, 3, "G103 (set polar center)")
+        name = _polar_name(words[0])
+        angle = value(words[1], p)
+        radius = value(words[2], p) * eng.length_unit
+        offset = value(words[3], p) * eng.length_unit if len(words) > 3 else 0.0
         n, z, q = eng.frame(name)
-        u = _direction(z, q, angle)
+        u = direction(z, q, angle)
         centre = [x - radius * ui - offset * ni for x, ui, ni in zip(eng.pos, u, n, strict=True)]
         eng.polars[name].centre = centre
         eng.polars[name].radius = radius
-        yield ModeChange(line, "POLAR_CENTRE", {name: centre})
+        yield ModeChange(line, "POLAR_CENTRE",
+                         {name: [eng.shown(k, c) for k, c in enumerate(centre)]})
     elif code in (104, 105):
         what = "G104 (set polar axis)" if code == 104 else "G105 (set polar zero)"
-        _args(tokens, 2, what)
-        name, ref = _polar_name(tokens[0]), _vector_name(tokens[1])
+        _args(words, 2, what)
+        name, ref = _polar_name(words[0]), _vector_name(words[1])
         if code == 104:
             eng.polars[name].normal = ref
         else:
             eng.polars[name].zero = ref
         yield ModeChange(line, "POLAR_AXIS" if code == 104 else "POLAR_ZERO", {name: ref})
     elif code == 107:
-        _args(tokens, 1, "G107 (set drill vector)")
-        eng.drill = _vector_name(tokens[0])
+        _args(words, 1, "G107 (set drill vector)")
+        eng.drill = _vector_name(words[0])
         yield ModeChange(line, "DRILL_VECTOR", eng.drill)
     elif code == 108:
-        _args(tokens, 2, "G108 (set vector position)")
-        name = _vector_name(tokens[0])
-        eng.along[name] = _value(tokens[1], p)
-        yield ModeChange(line, "VECTOR_POSITION", {name: eng.along[name]})
-    else:
-        raise EngineError(f"G{code} is not supported yet in the engine dialect")
+        _args(words, 2, "G108 (set vector position)")
+        name = _vector_name(words[0])
+        eng.along[name] = value(words[1], p) * eng.length_unit
+        yield ModeChange(line, "VECTOR_POSITION", {name: value(words[1], p)})
+    else:  # pragma: no cover (every code of NAMES is dispatched)
+        raise EngineError(f"G{code} is not supported in the engine dialect")
+
+
+def _tool_change(eng: Engine, line: int) -> ModeChange:
+    """TOOL_OFFSET: the tool length offset now applied, per axis, in program units."""
+    if not eng.tool_offset:
+        return ModeChange(line, "TOOL_OFFSET", {})
+    k, sign = eng.setup.fixtures[eng.fixture].tool_axis
+    return ModeChange(line, "TOOL_OFFSET", {AXES[k]: eng.shown(k, sign * eng.tool_length())})
 
 
 def _rotated(v: list[float], axis: list[float], angle: float) -> list[float]:
@@ -493,57 +258,76 @@ def _rotated(v: list[float], axis: list[float], angle: float) -> list[float]:
 
 # ---- lines --------------------------------------------------------------------------------------
 
-# settings without arguments, which may come before a line's main code
-_MODAL = {17, 18, 19, 20, 21, 61, 64, 69, 90, 91}
+# codes without arguments, which may come before a line's main code ("G90 G0 X1")
+_MODAL = {15, 17, 18, 19, 20, 21, 43, 49, 53, 54, 55, 56, 57, 58, 59, 61, 64, 69, 80, 90, 91}
 _G_NUMBER = re.compile(r"g\s*(\d+)(?![\d.])", re.IGNORECASE)
 _ASSIGN = re.compile(r"#\s*(<[^>]*>|\d+)\s*=(.*)")
+_KNOWN = set(NAMES)
+
+
+def _code(eng: Engine, line: int, code: int, rest: list[str]) -> Iterator[Op]:
+    if code == MOVE:
+        code = eng.motion
+    if code in (0, 1):
+        eng.motion = code
+        yield from _moving(eng, line, code, rest)
+    elif code == 31:
+        yield from _moving(eng, line, code, rest)
+    elif code in (2, 3):
+        yield from motion.circle(eng, line, code, _clauses(eng, rest))
+    elif code == 4:
+        yield from _dwell(eng, line, rest)
+    elif code == 16:
+        yield from _polar_on(eng, line, rest)
+    elif code in cycles.WHAT:
+        yield from cycles.drill(eng, line, code, _clauses(eng, rest))
+    elif code == 100:
+        yield from _run_axes(eng, line, rest)
+    else:
+        if code in _MODAL:
+            _no_arguments(code, rest)
+        yield from _setting(eng, line, code, rest)
+
+
+def _clauses(eng: Engine, words: list[str]) -> Clauses:
+    return clauses(words, eng.params)
 
 
 def _line(eng: Engine, n: int, raw: str) -> Iterator[Op]:
-    text = _strip(raw)
+    text = strip(raw)
     if not text or text == "%":
         return
     m = _ASSIGN.fullmatch(text)
     if m is not None:
-        value = _value(m.group(2).strip().replace(" ", ""), eng.params)
+        result = value(m.group(2).strip().replace(" ", ""), eng.params)
         key = m.group(1)
         if key.startswith("<"):
-            eng.params.names[key[1:-1].replace(" ", "").lower()] = value
+            eng.params.names[key[1:-1].replace(" ", "").lower()] = result
         else:
-            eng.params.numbered[int(key)] = value
+            eng.params.numbered[int(key)] = result
         return
     g = _G_NUMBER.match(text)
     if g is not None:
         code = int(g.group(1))
-        rest = _tokens(text[g.end():])
+        rest = tokens(text[g.end():])
         if code not in _KNOWN:
             raise EngineError(f"Unknown code G{code}")
     else:
-        words = _tokens(text)
+        words = tokens(text)
         if words and words[0].upper() == "F":
-            yield from _motion(eng, n, eng.motion, _clauses(words, eng.params))
+            yield from _moving(eng, n, eng.motion, words)
             return
         named = split_name(words)
         if named is None:
             raise EngineError(f"Unknown name '{words[0]}'")
         code, used = named
         rest = words[used:]
-    if code in _MODAL and rest:  # a setting before the line's main code: "G90 G0 X1"
+    if code in _MODAL and rest and (_G_NUMBER.match(rest[0]) or split_name(rest)):
+        # a setting before the line's main code
         yield from _setting(eng, n, code, [])
         yield from _line(eng, n, " ".join(rest))
         return
-    if code == MOVE:
-        code = eng.motion
-    if code in (0, 1):
-        eng.motion = code
-        yield from _motion(eng, n, code, _clauses(rest, eng.params))
-    elif code in _NOT_YET:
-        raise EngineError(f"G{code} is not supported yet in the engine dialect")
-    else:
-        yield from _setting(eng, n, code, rest)
-
-
-_KNOWN = set(NAMES)
+    yield from _code(eng, n, code, rest)
 
 
 def run(text: str, engine: Engine | None = None, file: str | None = None) -> Iterator[Op]:

@@ -6,7 +6,7 @@ import json
 from collections.abc import Iterable
 from typing import TextIO
 
-from .interp import Dwell, EngineSegment, Op
+from .state import Dwell, EngineSegment, Op, Stop
 
 
 def as_dict(op: Op) -> dict[str, object]:
@@ -16,6 +16,8 @@ def as_dict(op: Op) -> dict[str, object]:
                 "axes": {a: list(c) for a, c in op.axes.items()}}
     if isinstance(op, Dwell):
         return {"op": "DWELL", "line": op.line, "seconds": op.seconds}
+    if isinstance(op, Stop):
+        return {"op": "STOP", "line": op.line}
     return {"op": op.name, "line": op.line, "value": op.value}
 
 
@@ -30,6 +32,8 @@ def as_text(op: Op) -> str:
                 f"{_number(op.duration)}, {axes})")
     if isinstance(op, Dwell):
         return f"DWELL(line={op.line}, seconds={_number(op.seconds)})"
+    if isinstance(op, Stop):
+        return f"STOP(line={op.line})"
     return f"{op.name}(line={op.line}, {json.dumps(op.value)})"
 
 
