@@ -7,7 +7,8 @@ import math
 
 import pytest
 
-from ngc.engine import Dwell, EngineSegment, ModeChange, run
+from ngc.engine import Dwell, Engine, EngineSegment, ModeChange, Setup, run
+from ngc.engine.setup import Fixture
 from ngc.engine.bezier import point
 from ngc.engine.names import MOVE, code_of
 from ngc.errors import NgcError
@@ -198,3 +199,194 @@ def test_cli_canon_engine(tmp_path, capsys) -> None:  # type: ignore[no-untyped-
     captured = capsys.readouterr()
     assert captured.out.startswith("ENGINE_SEGMENT(line=1, motion=rapid, duration=0.040000, X=[0.000000")
     assert "plain.ngc:2:1: Unknown name 'frobnicate'" in captured.err
+
+
+# ---- the codes after the first part ------------------------------------------------------------
+
+def ends(text: str, engine: Engine | None = None) -> list[dict[str, float]]:
+    """Each segment's end point on the axes it names, rounded to 1e-9."""
+    return [{a: round(c[3], 9) + 0.0 for a, c in s.axes.items()}
+            for s in run(text, engine) if isinstance(s, EngineSegment)]
+
+
+def test_circle_cw_and_ccw_stay_on_the_circle() -> None:
+    segs = segments("F 10\nG2 X2 Y0 I1 J0")
+    assert len(segs) == 2 and all(s.motion == "arc" for s in segs)
+    assert segs[0].axes["Y"][3] == pytest.approx(1.0)  # clockwise from (0, 0) about (1, 0): up
+    for x, y in samples(segs):
+        assert abs(math.hypot(x - 1.0, y) - 1.0) < 3e-4
+    assert (segs[-1].axes["X"][3], segs[-1].axes["Y"][3]) == (2.0, 0.0)
+    segs = segments("F 10\nG3 X2 Y0 I1 J0")
+    assert segs[0].axes["Y"][3] == pytest.approx(-1.0)
+    # a half circle of radius 1 at 10 mm/s
+    assert sum(s.duration for s in segs) == pytest.approx(math.pi / 10, rel=1e-3)
+
+
+def test_circle_with_r_short_and_long() -> None:
+    short = segments("F 10\nG2 X1 Y1 R1")
+    assert len(short) == 1  # a quarter turn about (1, 0)
+    for x, y in samples(short):
+        assert abs(math.hypot(x - 1.0, y) - 1.0) < 3e-4
+    long = segments("F 10\nG2 X1 Y1 R-1")
+    assert len(long) == 3  # three quarters about (0, 1)
+    for x, y in samples(long):
+        assert abs(math.hypot(x, y - 1.0) - 1.0) < 3e-4
+
+
+def test_full_circle_and_helix_in_other_planes() -> None:
+    segs = segments("F 10\nG2 X0 Y0 I1 Z-1")
+    assert len(segs) == 4 and segs[-1].axes["Z"][3] == -1.0
+    assert segs[1].axes["Z"][3] == pytest.approx(-0.5)
+    segs = segments("F 10\nG18\nG3 Z2 X0 K1")  # ZX plane: centre (Z 1, X 0)
+    for s in segs:
+        for i in range(65):
+            z, x = point(s.axes["Z"], i / 64), point(s.axes["X"], i / 64)
+            assert abs(math.hypot(z - 1.0, x) - 1.0) < 3e-4
+    # counter-clockwise in (Z, X) as LinuxCNC's G18 (rs274: ARC_FEED(2, 0, 1, 0, 1, ...)): from
+    # 180 degrees (Z 0) through 270 (X -1)
+    assert segs[0].axes["X"][3] == pytest.approx(-1.0)
+
+
+def test_circle_segments_grow_with_radius() -> None:
+    assert len(segments("F 10\nG3 X-4 Y0 I-2")) == 4  # 180 degrees of radius 2
+
+
+def test_polar_coordinates_g16() -> None:
+    assert ends("G16 X0 Y0\nG0 X5 Y90\nmove Y180\nG91\nmove X1\nG15\nG90\nG0 X1 Y1") == [
+        {"X": 0.0, "Y": 5.0}, {"X": -5.0, "Y": 0.0}, {"X": -6.0, "Y": 0.0}, {"X": 1.0, "Y": 1.0}]
+    # the origin is where G16 names it, the current position elsewhere; a second G16 goes
+    # through the polar translation first
+    # origin (5, 4), to (5, 6); the new origin 1 at 180 degrees from the old: (4, 4)
+    assert ends("G0 X3 Y4\nG16 X5\nG0 X2 Y90\nG16 X1 Y180\nG0 X1 Y0") == [
+        {"X": 3.0, "Y": 4.0}, {"X": 5.0, "Y": 6.0}, {"X": 5.0, "Y": 4.0}]
+
+
+def test_polar_coordinates_follow_the_plane() -> None:
+    # ZX: the radius on Z, the angle on X
+    (seg,) = segments("G18\nG16 Z0 X0\nG0 Z2 X90")
+    assert seg.axes["X"][3] == pytest.approx(2.0) and seg.axes["Z"][3] == pytest.approx(0.0)
+
+
+def test_probe_is_a_feed_and_sets_probe_stop() -> None:
+    ops = list(run("F 5\nG31 X1\n#1 = [#<__probe_stop> + 7]\nG0 X#1"))
+    segs = [op for op in ops if isinstance(op, EngineSegment)]
+    assert segs[0].motion == "probe" and segs[0].duration == pytest.approx(0.2)
+    assert segs[1].axes["X"][3] == 7.0
+
+
+SETUP = Setup(
+    fixtures=(Fixture(),
+              Fixture(offsets=(10.0, 20.0, 0.0, 0, 0, 0, 0, 0, 0)),
+              Fixture(offsets=(0.0, 0.0, 5.0, 0, 0, 0, 0, 0, 0), tool_axis=(0, -1.0)),
+              *(Fixture(),) * 4),
+    tool=3, lengths={3: 25.0})
+
+
+def test_fixtures_and_tool_length() -> None:
+    program = "G0 X1\nG54\nG0 X1\nG43\nG0 Z0\nG55\nG0 X0 Z0\nG49\nG0 X0\nG53\nG0 X0 Y0 Z0"
+    assert ends(program, Engine(setup=SETUP)) == [
+        {"X": 1.0},
+        {"X": 11.0},                     # G54: X + 10 (Y not named: stays)
+        {"Z": 25.0},                     # G43: the tool along Z
+        {"X": -25.0, "Z": 5.0},          # G55: its tool axis is -X
+        {"X": 0.0},                      # G49
+        {"X": 0.0, "Y": 0.0, "Z": 0.0}]  # G53: fixture 0
+
+
+def test_g43_needs_a_selected_tool_with_a_length() -> None:
+    with pytest.raises(NgcError, match="the machine setup selects no tool") as info:
+        list(run("G0 X1\nG43"))
+    assert info.value.line == 2
+    with pytest.raises(NgcError, match="gives tool 3 no length"):
+        list(run("G43", Engine(setup=Setup(tool=3))))
+
+
+def test_preset_keeps_the_fixture() -> None:
+    ops = list(run("G54\nG0 X1\nG92 X0\nG0 X1", Engine(setup=SETUP)))
+    preset = [op for op in ops if isinstance(op, ModeChange) and op.name == "SET_POSITION"]
+    assert preset[0].value["X"] == 10.0  # type: ignore[index]  # machine X reads program X 0
+    assert ends("G54\nG0 X1\nG92 X0\nG0 X1", Engine(setup=SETUP))[-1]["X"] == 11.0
+
+
+def test_exact_stop_after_each_command() -> None:
+    ops = list(run("G61\nG0 X1\nF 10\nG1 X2\nG2 X4 I1\nG64\nG0 X0"))
+    kinds = [type(op).__name__ for op in ops if not isinstance(op, ModeChange)]
+    assert kinds == ["EngineSegment", "Stop", "EngineSegment", "Stop",
+                     "EngineSegment", "EngineSegment", "Stop", "EngineSegment"]
+
+
+def test_drill_cycle_along_the_drill_vector() -> None:
+    ops = list(run("F 10\nG0 Z5\nG81 X1 Y2 Z-3 R1\nG81 X4"))
+    segs = [op for op in ops if isinstance(op, EngineSegment)]
+    path = [(s.motion, {a: s.axes[a][3] for a in s.axes}) for s in segs[1:]]
+    assert path == [
+        ("rapid", {"X": 1.0, "Y": 2.0}), ("rapid", {"Z": 1.0}),
+        ("feed", {"Z": -3.0}), ("rapid", {"Z": 1.0}),
+        ("rapid", {"X": 4.0}), ("feed", {"Z": -3.0}), ("rapid", {"Z": 1.0})]
+    # along X: the hole's bottom is the X named; across it, Y and Z
+    segs = segments("F 10\nG107 VX\nG81 X-2 Y1 Z1 R0.5")
+    assert [{a: s.axes[a][3] for a in s.axes} for s in segs] == [
+        {"X": 0.5}, {"Y": 1.0, "Z": 1.0}, {"X": -2.0}, {"X": 0.5}]
+
+
+def test_peck_and_dwell_cycles() -> None:
+    ops = list(run("F 10\nG83 X0 Y0 Z-2 R0 Q1\nG80\nG82 X1 Z-1 R0 P0.5"))
+    zs = [(op.motion, op.axes["Z"][3]) for op in ops
+          if isinstance(op, EngineSegment) and "Z" in op.axes]
+    assert zs[:5] == [("feed", -1.0), ("rapid", 0.0), ("rapid", pytest.approx(-0.746)),
+                      ("feed", -2.0), ("rapid", 0.0)]
+    assert Dwell(4, 0.5) in ops
+
+
+def test_run_axes_move_on_until_positioned() -> None:
+    ops = list(run("G100 X50\nG0 Y5\nG4 P1\nG0 X0"))
+    segs = [op for op in ops if isinstance(op, EngineSegment)]
+    assert segs[0].axes["X"] == pytest.approx((0.0, 0.8333333, 1.6666667, 2.5))  # 12.5 mm/s
+    assert segs[1].motion == "run" and segs[1].axes["X"][3] == pytest.approx(15.0)
+    assert segs[2].axes["X"][0] == pytest.approx(15.0)
+    runs = [op.value for op in ops if isinstance(op, ModeChange) and op.name == "RUN"]
+    assert runs == [{"X": 50.0}, {}]
+
+
+def test_inches() -> None:
+    # G20: positions in inches, feed in inches per minute; kept in mm inside
+    (seg,) = segments("G20\nF 60\nG1 X2")
+    assert seg.axes["X"][3] == 2.0 and seg.duration == pytest.approx(2.0)
+    (a, b) = segments("G20\nG0 X1\nG21\nG0 Y1")
+    assert b.axes["Y"][3] == 1.0 and "X" not in b.axes
+    assert a.duration == pytest.approx(25.4 / 25.0)
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("F 1\nG2 X1 Y1", "G2 \\(circle cw\\) needs the centre \\(I J K\\) or the radius \\(R\\)"),
+    ("F 1\nG3 X1 I1 R1", "G3 \\(circle ccw\\) takes I J K or R, not both"),
+    ("F 1\nG2 X1 K1", "K is not a centre offset in the XY plane \\(I J\\)"),
+    ("F 1\nG2 X3 I1", "Radius to end of arc differs from radius to start"),
+    ("F 1\nG2 X3 R1", "Arc radius too small to reach end point"),
+    ("F 1\nG2 I0", "Zero-radius arc"),
+    ("F 1\nG2 X1 Q1 I1", "Q is not a word of G2 \\(circle cw\\)"),
+    ("F 1\nG2 X1 2 I1", "X takes 1 expression in G2 \\(circle cw\\), not 2"),
+    ("G16 A1", "G16 \\(set polar origin\\) takes X Y Z each with one value, not A"),
+    ("G16\nG0 X1 2 3", "X takes 1 expression in polar coordinates \\(G16\\), not 3"),
+    ("G81 X1 Z-1", "G81 \\(drill\\) needs R \\(the retract level\\)"),
+    ("G81 X1 R1", "G81 \\(drill\\) needs the bottom of the hole"),
+    ("G81 X1 Z2 R1", "G81 \\(drill\\): the bottom of the hole is above R"),
+    ("G83 X1 Z-1 R1", "G83 \\(chip clearing drill\\) needs Q \\(the peck\\)"),
+    ("G73 X1 Z-1 R1 Q-1", "G73 \\(chip breaking drill\\): Q \\(the peck\\) must be positive"),
+    ("G82 X1 Z-1 R1", "G82 \\(drill, dwell\\) needs P \\(the dwell\\)"),
+    ("G81 X1 Z-1 R1", "G81 \\(drill\\) with no feed rate"),
+    ("G81 X1 Z-1 R1 I2", "I is not a word of G81 \\(drill\\)"),
+    ("G100 X150", "G100 \\(run\\): X at 150% is over its maximum speed"),
+    ("G100 VX 10", "G100 \\(run\\) takes axes each with one value, not VX"),
+    ("G4 P-1", "G4 \\(dwell\\): the time must not be negative"),
+    ("G92 PZ 1", "G92 \\(preset\\) takes axes each with one value, not PZ"),
+    ("G54 X1", "G54 takes no arguments, not 'X 1'"),
+    ("G43 H1", "G43 \\(apply tool length offset\\) takes no arguments"),
+    ("G0 R1", "R is not a reference of G0"),
+    ("F -1", "Negative feed rate F -1"),
+])
+def test_more_errors(text: str, message: str) -> None:
+    lines = text.count("\n") + 2
+    with pytest.raises(NgcError, match=message) as info:
+        list(run("G21\n" + text))
+    assert info.value.line == lines

@@ -114,12 +114,9 @@ def _polar_on(eng: Engine, line: int, words: list[str]) -> Iterator[Op]:
     offsets = eng.offsets()
     first, second, _ = PLANES[eng.plane]
     if eng.polar_mode is not None:
-        rest, made = motion.polar_coordinates(eng, found)
-        if made:
-            disp = made[0].piece(0.0, 1.0)
-            for k, c in disp.items():
-                origin[k] = eng.pos[k] + c[3]
-        found = rest
+        found, made = motion.polar_coordinates(eng, found)
+        for k, t in (made[0].ends if made else {}).items():
+            origin[k] = t
     for ref, values in found:
         if ref not in ("X", "Y", "Z"):
             raise EngineError(f"{what} takes X Y Z each with one value, not {ref}")

@@ -352,10 +352,8 @@ def circle(eng: Engine, line: int, code: int, clauses: Clauses) -> Iterator[Op]:
     if polar:
         _, made = polar_coordinates(eng, polar)
         offs = eng.offsets()
-        for k in (first, second):
-            disp = made[0].piece(0.0, 1.0).get(k)
-            if disp is not None:
-                end[k] = eng.pos[k] + disp[3] - offs[k]
+        for k, t in made[0].ends.items():
+            end[k] = t - offs[k]
     yield from ops
     if radius_word is not None and given:
         raise EngineError(f"{what} takes I J K or R, not both")
