@@ -8,9 +8,9 @@ import math
 import pytest
 
 from ngc.engine import Dwell, Engine, EngineSegment, ModeChange, Setup, run
-from ngc.engine.setup import Fixture
 from ngc.engine.bezier import point
 from ngc.engine.names import MOVE, code_of
+from ngc.engine.setup import Fixture
 from ngc.errors import NgcError
 
 
