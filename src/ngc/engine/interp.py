@@ -162,6 +162,8 @@ def _setting(eng: Engine, line: int, code: int, words: list[str]) -> Iterator[Op
     elif 53 <= code <= 59:
         eng.fixture = code - 53
         yield ModeChange(line, "FIXTURE", eng.fixture)
+        if eng.tool_offset:  # along this fixture's tool axis now
+            yield _tool_change(eng, line)
     elif code in (61, 64):
         eng.exact = code == 61
         yield ModeChange(line, "EXACT_STOP", eng.exact)
@@ -258,6 +260,7 @@ def _rotated(v: list[float], axis: list[float], angle: float) -> list[float]:
 # codes without arguments, which may come before a line's main code ("G90 G0 X1")
 _MODAL = {15, 17, 18, 19, 20, 21, 43, 49, 53, 54, 55, 56, 57, 58, 59, 61, 64, 69, 80, 90, 91}
 _G_NUMBER = re.compile(r"g\s*(\d+)(?![\d.])", re.IGNORECASE)
+_G_DECIMAL = re.compile(r"g\s*\d*\.\d*", re.IGNORECASE)
 _ASSIGN = re.compile(r"#\s*(<[^>]*>|\d+)\s*=(.*)")
 _KNOWN = set(NAMES)
 
@@ -304,6 +307,9 @@ def _line(eng: Engine, n: int, raw: str) -> Iterator[Op]:
             eng.params.numbered[int(key)] = result
         return
     g = _G_NUMBER.match(text)
+    decimal = _G_DECIMAL.match(text)
+    if decimal is not None:
+        raise EngineError(f"Unknown code {decimal.group(0).upper()}")
     if g is not None:
         code = int(g.group(1))
         rest = tokens(text[g.end():])
@@ -319,7 +325,8 @@ def _line(eng: Engine, n: int, raw: str) -> Iterator[Op]:
             raise EngineError(f"Unknown name '{words[0]}'")
         code, used = named
         rest = words[used:]
-    if code in _MODAL and rest and (_G_NUMBER.match(rest[0]) or split_name(rest)):
+    if code in _MODAL and rest and (_G_NUMBER.match(rest[0]) or rest[0].upper() == "F"
+                                    or split_name(rest)):
         # a setting before the line's main code
         yield from _setting(eng, n, code, [])
         yield from _line(eng, n, " ".join(rest))

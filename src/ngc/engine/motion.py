@@ -355,6 +355,8 @@ def circle(eng: Engine, line: int, code: int, clauses: Clauses) -> Iterator[Op]:
         for k, t in made[0].ends.items():
             end[k] = t - offs[k]
     yield from ops
+    if not eng.feed:
+        raise EngineError(f"{what} with no feed rate: set one with F")
     if radius_word is not None and given:
         raise EngineError(f"{what} takes I J K or R, not both")
     s = (prog[first], prog[second])

@@ -50,9 +50,14 @@ def tokens(text: str) -> list[str]:
 
 def value(token: str, params: Params) -> float:
     """An expression's value."""
+    text = re.sub(r"\s+", "", token.lower())
     try:
-        parsed = read_value(re.sub(r"\s+", "", token.lower()))
-    except NgcSyntaxError:
+        parsed = read_value(text)
+    except NgcSyntaxError as exc:
+        if exc.message.startswith("Bad expression"):  # something after a whole value
+            raise NgcSyntaxError(f"Bad expression '{token}': clauses are separated by a space "
+                                 f"or a comma") from None
+        exc.column = None  # (a column in the token, not in the line)
         raise
     except Exception as exc:  # (a token the reader cannot take)
         raise NgcSyntaxError(f"Bad expression '{token}'") from exc
