@@ -174,7 +174,7 @@ def test_expressions_and_parameters() -> None:
     ("G0 PZ 1 2 3 4 5", "PZ takes 1 to 4 expressions, not 5"),
     ("G1 X 1", "G1 \\(feed\\) with no feed rate"),
     ("G0 1 X2", "Expression '1' before any reference"),
-    ("G2 X1 Y1 R1", "G2/G3 \\(circle\\) with no feed rate"),
+    ("G2 X1 Y1 R1", "G2 \\(circle cw\\) with no feed rate"),
     ("G999", "Unknown code G999"),
     ("G102 VQ X 1", "'VQ' is not a vector"),
     ("G104 PQ VX", "'PQ' is not a polar transform"),

@@ -13,7 +13,7 @@ from ngc.engine.names import MOVE, NAMES, code_of, split_name
 from ngc.engine.reading import strip, tokens
 
 sys.path.insert(0, str(Path(__file__).with_name("engine")))
-import golden  # noqa: E402
+import golden
 
 CASES = golden.cases()
 
