@@ -12,7 +12,6 @@ from ngc.engine import Dwell, Engine, EngineSegment, ModeChange, Setup, run
 from ngc.engine.names import NAMES
 from ngc.engine.setup import Fixture
 from ngc.errors import NgcError
-
 from test_engine_vs_linuxcnc import _close, engine, linuxcnc
 
 SETUP = Setup(fixtures=(Fixture(), Fixture(offsets=(5.0, -3.0, 1.0, 0, 0, 0, 0, 0, 0)),
