@@ -390,3 +390,41 @@ def test_more_errors(text: str, message: str) -> None:
     with pytest.raises(NgcError, match=message) as info:
         list(run("G21\n" + text))
     assert info.value.line == lines
+
+
+@pytest.mark.parametrize(("sheet", "message"), [
+    ("frob = 1", "unknown key 'frob' \\(tool, tools, fixtures, axes\\)"),
+    ("tool = 1.5", "tool must be a whole number, not 1.5"),
+    ("[tools.1]\nlen = 2", "tools.1: unknown key 'len' \\(length\\)"),
+    ("[tools.x]\nlength = 2", "tools: 'x' is not a number"),
+    ("[tools.1]\nlength = 'a'", "tools.1.length must be a number, not 'a'"),
+    ("[fixtures.9]\nX = 1", "fixtures: there is no fixture 9 \\(0 to 6\\)"),
+    ("[fixtures.1]\nQ = 1", "fixtures.1: unknown key 'Q' \\(X ... W, tool_axis\\)"),
+    ("[fixtures.1]\ntool_axis = 'VZ'", "fixtures.1.tool_axis must be an axis letter"),
+    ("[axes.Q]\nmax_speed = 1", "axes: 'Q' is not an axis"),
+    ("[axes.X]\nmax_speed = 0", "axes.X.max_speed must be positive"),
+    ("fixtures = 3", "fixtures must be a table"),
+    ("tool = [", "setup file .*: "),
+])
+def test_setup_sheet_errors(tmp_path, sheet: str, message: str) -> None:  # type: ignore[no-untyped-def]
+    from ngc.engine import read_setup
+    from ngc.errors import NgcConfigError
+
+    path = tmp_path / "machine.toml"
+    path.write_text(sheet + "\n")
+    with pytest.raises(NgcConfigError, match=message):
+        read_setup(str(path))
+
+
+def test_setup_sheet_read(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    from ngc.engine import read_setup
+
+    path = tmp_path / "machine.toml"
+    path.write_text("tool = 2\n[tools.2]\nlength = 4\n[fixtures.6]\nY = -1\ntool_axis = '-x'\n"
+                    "[axes.A]\nmax_speed = 90\n")
+    setup = read_setup(str(path))
+    assert setup.tool == 2 and setup.lengths == {2: 4.0}
+    assert setup.fixtures[6].offsets[1] == -1.0 and setup.fixtures[6].tool_axis == (0, -1.0)
+    assert setup.max_speed[3] == 90.0 and setup.max_speed[0] == 25.0
+    ops = list(run("G59\nG43\nG0 X0", Engine(setup=setup)))
+    assert ops[-1].axes["X"][3] == -4.0  # type: ignore[union-attr]

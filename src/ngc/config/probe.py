@@ -43,7 +43,7 @@ from collections.abc import Callable, Sequence
 from itertools import pairwise
 from typing import Any, Protocol
 
-from ..errors import NgcConfigError
+from .tomlfile import read_toml
 
 Point = Sequence[float]
 _UNITS = {"mm": 1.0, "inch": 25.4}
@@ -218,19 +218,8 @@ class Surfaces:
 # -- the file ---------------------------------------------------------------------------------
 def read_probe_file(path: str) -> Surfaces:
     """Read a probe file (module docstring); :class:`NgcConfigError` names what is wrong."""
-    import tomllib  # here, not at start-up: only a run with a probe file needs it
-
-    try:
-        with open(path, "rb") as handle:
-            data = tomllib.load(handle)
-    except OSError as exc:
-        raise NgcConfigError(f"cannot open probe file {path}: {exc.strerror}", file=path) from None
-    except tomllib.TOMLDecodeError as exc:
-        raise NgcConfigError(f"probe file {path}: {exc}", file=path) from None
-    try:
-        return surfaces_from(data)
-    except (ValueError, TypeError, KeyError, IndexError) as exc:
-        raise NgcConfigError(f"probe file {path}: {exc}", file=path) from None
+    return read_toml(path, "probe file", surfaces_from, (ValueError, TypeError, KeyError,
+                                                         IndexError))
 
 
 def surfaces_from(data: dict[str, Any]) -> Surfaces:

@@ -27,7 +27,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
-from ..errors import NgcConfigError
+from ..config.tomlfile import read_toml
 
 AXES = "XYZABCUVW"
 ROTARY = frozenset("ABC")
@@ -133,16 +133,4 @@ def parse(data: Mapping[str, object]) -> Setup:
 
 def read_setup(path: str) -> Setup:
     """Read a setup sheet (module docstring); :class:`NgcConfigError` names what is wrong."""
-    import tomllib  # here, not at start-up: only a run with a setup sheet needs it
-
-    try:
-        with open(path, "rb") as handle:
-            data = tomllib.load(handle)
-    except OSError as exc:
-        raise NgcConfigError(f"cannot open setup file {path}: {exc.strerror}", file=path) from None
-    except tomllib.TOMLDecodeError as exc:
-        raise NgcConfigError(f"setup file {path}: {exc}", file=path) from None
-    try:
-        return parse(data)
-    except ValueError as exc:
-        raise NgcConfigError(f"setup file {path}: {exc}", file=path) from None
+    return read_toml(path, "setup file", parse)
