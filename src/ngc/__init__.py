@@ -6,6 +6,8 @@ does as a stream of canonical machine operations, sent to a *sink*.
 Interpreting:
 
 * :func:`interpret` — run a whole program given as text; flushes the sink at the end.
+  ``dialect="engine"`` (or the program's first line ``(dialect: engine)``) runs it in the engine
+  dialect (:mod:`ngc.engine`, :mod:`ngc.dialects`) on the machine of ``setup``.
 * :class:`Interpreter` — one interpreter with all its state: ``startup()``, then
   ``run(lines, file=...)`` for a program given line by line (any iterable of lines, such as an
   open file); ``configure(settings, ini)`` and ``load_parameters(values)`` apply an INI file's
@@ -24,7 +26,8 @@ Canonical operations and sinks:
 Checking and summing up motion:
 
 * :func:`check_file` — run a program file (writing no file), returning a :class:`CheckResult`:
-  the line count, a :class:`Summary` and the first error.
+  the line count, a :class:`Summary` and the first error; for an engine-dialect program an
+  :class:`EngineCheckResult` with an :class:`EngineSummary` (segments, time, lengths, extents).
 * :func:`summarize` — a :class:`Summary` of a sequence of operations: move counts, rapid and feed
   lengths, extents.
 
@@ -49,12 +52,16 @@ from .interp.interpreter import Interpreter
 
 if TYPE_CHECKING:
     from .config.probe import Probe
+    from .engine import Setup as EngineSetup
+    from .engine_report import EngineCheckResult, EngineSummary
     from .report import CheckResult, Summary, check_file, summarize
 
 __version__ = "0.1.0"
 
 __all__ = [
     "CheckResult",
+    "EngineCheckResult",
+    "EngineSummary",
     "Interpreter",
     "NgcError",
     "Op",
@@ -66,7 +73,9 @@ __all__ = [
 ]
 
 
-def interpret(text: str, sink: Sink, *, file: str | None = None, probe: Probe | None = None) -> None:
+def interpret(text: str, sink: Sink, *, dialect: str | None = None,
+              setup: EngineSetup | None = None, file: str | None = None,
+              probe: Probe | None = None) -> None:
     """Interpret a whole program given as text, sending canonical operations to ``sink``, and
     flush the sink (also when the program stops with an error).
 
@@ -74,13 +83,35 @@ def interpret(text: str, sink: Sink, *, file: str | None = None, probe: Probe | 
     a simulated probe input for G38.2-G38.5 (:class:`ngc.config.probe.Surfaces`, e.g. from
     ``read_probe_file``; None: rs274's probe, which never trips).
 
+    ``dialect`` is ``"linuxcnc"`` or ``"engine"`` (``ValueError`` for anything else); None: the
+    one the program's first line names (``(dialect: engine)``), else ``"linuxcnc"``.  In the
+    engine dialect each of the engine's operations (:mod:`ngc.engine`: ``EngineSegment``,
+    ``Dwell``, ...) goes to ``sink.emit(op, label, line)`` with ``label`` its name (its JSON
+    ``"op"``: ``ENGINE_SEGMENT``, ...), on the machine ``setup`` describes
+    (:func:`ngc.engine.read_setup`; None: the default machine).  ``ListSink`` collects them,
+    ``TextSink`` and ``JsonSink`` write them as ``ngc canon --dialect engine`` does.  A
+    ``setup`` for a LinuxCNC program, or a ``probe`` for an engine one, is a ``ValueError``.
+
     >>> import io
     >>> from ngc.canon.text import TextSink
     >>> out = io.StringIO()
     >>> interpret("G21 F100\\nG1 X2\\nM2\\n", TextSink(out))
     >>> out.getvalue().splitlines()[7]
     '    8 N..... STRAIGHT_FEED(2.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)'
+    >>> out = io.StringIO()
+    >>> interpret("F10\\nfeed X2\\n", TextSink(out), dialect="engine")
+    >>> "ENGINE_SEGMENT(line=2, motion=feed, duration=0.200000" in out.getvalue()
+    True
     """
+    from . import dialects
+
+    if dialects.of_text(text, dialect) == dialects.ENGINE:
+        if probe is not None:
+            raise ValueError(dialects.API_PROBE_IS_LINUXCNCS)
+        dialects.interpret_engine(text, sink, setup=setup, file=file)
+        return
+    if setup is not None:
+        raise ValueError(dialects.API_SETUP_IS_ENGINES)
     interp = Interpreter(sink, probe=probe)
     try:
         interp.startup()
@@ -94,16 +125,21 @@ class _Package(types.ModuleType):
     that ``ngc rs274`` starts without it; ``help(ngc)`` lists it with the rest."""
 
     _LAZY = frozenset({"CheckResult", "Summary", "check_file", "summarize"})
+    _LAZY_ENGINE = frozenset({"EngineCheckResult", "EngineSummary"})
 
     def __getattr__(self, name: str) -> Any:
         if name in self._LAZY:
             from . import report
 
             return getattr(report, name)
+        if name in self._LAZY_ENGINE:
+            from . import engine_report
+
+            return getattr(engine_report, name)
         raise AttributeError(f"module 'ngc' has no attribute {name!r}")
 
     def __dir__(self) -> list[str]:
-        return sorted({*super().__dir__(), *self._LAZY})
+        return sorted({*super().__dir__(), *self._LAZY, *self._LAZY_ENGINE})
 
 
 sys.modules[__name__].__class__ = _Package

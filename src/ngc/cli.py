@@ -22,20 +22,19 @@ import argparse
 import gc
 import io
 import os
-import re
 import sys
 from collections.abc import Callable
-from typing import TextIO
+from typing import TYPE_CHECKING, NamedTuple, TextIO
 
-from . import __version__, engine, rs274
+from . import __version__, dialects, rs274
 from .canon.jsonl import JsonSink, dumps
 from .canon.ops import Sink
 from .canon.text import TextSink
-from .engine import output as engine_output
+from .dialects import ENGINE, LINUXCNC
 from .errors import NgcConfigError, NgcError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
-from .interp.source import ProgramReader, open_text_program, text_reader
+from .interp.source import text_reader
 from .options import MachineOptions, Setup, load_setup, new_interpreter, parse_positive
 from .progress import Progress, descriptor, is_terminal
 from .termination import Terminated, signals_raise
@@ -46,6 +45,9 @@ EXIT_USAGE = 2
 EXIT_INTERNAL = 70  # EX_SOFTWARE (sysexits.h)
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what shells report for Ctrl-C
 EXIT_BROKEN_PIPE = 141  # 128 + SIGPIPE, what a C filter killed by SIGPIPE reports
+
+if TYPE_CHECKING:
+    from .engine import Setup as EngineSetup
 
 SINKS: dict[str, Callable[[TextIO], Sink]] = {"text": TextSink, "json": JsonSink}
 STDIN_NAME = "<stdin>"  # how a program read from standard input (``-``) is named
@@ -127,14 +129,15 @@ def build_parser() -> argparse.ArgumentParser:
         "rs274",
         help="drop-in for LinuxCNC's standalone rs274 (batch mode); ngc rs274 --help for more",
         usage="ngc rs274 [-t TBL] [-v VAR] [-i INI] [-n 0|1|2] [-b] [-s] [-g] "
-        "[--max-iterations N] FILE [OUT]",
+        "[--max-iterations N] [--dialect linuxcnc|engine] [--setup FILE] FILE [OUT]",
         add_help=False,
     )
-    machine = _machine_options()
+    machine = [_machine_options(), _dialect_options()]
     canon = sub.add_parser(
-        "canon", parents=[machine], help="print the canonical machine operations of a program",
+        "canon", parents=machine, help="print the canonical machine operations of a program",
         description="Print the canonical machine operations of a program: interpreter start-up, "
-        "then the program, as rs274 prints them (text) or as JSON lines.",
+        "then the program, as rs274 prints them (text) or as JSON lines. In the engine dialect: "
+        "the engine's operations (ENGINE_SEGMENT, DWELL, ...), one per line.",
         epilog=PROGRAM_HELP,
     )
     canon.add_argument("file", metavar="FILE", help="the program (- for standard input)")
@@ -144,18 +147,12 @@ def build_parser() -> argparse.ArgumentParser:
         default="text",
         help="text: rs274's transcript format (default); json: JSON lines",
     )
-    canon.add_argument(
-        "--dialect",
-        choices=("linuxcnc", "engine"),
-        default=None,
-        help="the program's dialect: linuxcnc (default) or engine (seed 003's named codes and "
-        "engine segments); a first line '(dialect: engine)' selects engine too",
-    )
     canon.set_defaults(run=run_canon)
     check = sub.add_parser(
-        "check", parents=[machine], help="validate programs and summarize their motion",
+        "check", parents=machine, help="validate programs and summarize their motion",
         description="Run programs through the interpreter, writing nothing to disk: per file, "
-        "the first error (on stderr) and a summary of the motion (on stdout).",
+        "the first error (on stderr) and a summary of the motion (on stdout). Each file is in "
+        "the dialect --dialect gives, else in the one its first line names.",
         epilog=PROGRAM_HELP,
     )
     check.add_argument("files", metavar="FILE", nargs="+", help="programs (- for standard input)")
@@ -200,6 +197,22 @@ def _machine_options() -> argparse.ArgumentParser:
     return parent
 
 
+def _dialect_options() -> argparse.ArgumentParser:
+    """The dialect and the engine dialect's machine input (see :mod:`ngc.dialects`)."""
+    parent = argparse.ArgumentParser(add_help=False)
+    group = parent.add_argument_group("dialect")
+    group.add_argument("--dialect", choices=dialects.DIALECTS, default=None,
+                       help="the program's dialect: linuxcnc (LinuxCNC's rs274, the default) or "
+                       "engine (seed 003's codes by name and engine segments); without it, a "
+                       "program whose first line is '(dialect: engine)' or '; dialect: engine' "
+                       "is in the engine dialect (ngc check: per file)")
+    group.add_argument("--setup", metavar="FILE", dest="setup_file",
+                       help="the engine dialect's machine setup sheet (TOML: fixtures, tool "
+                       "lengths, the selected tool, maximum speeds); the LinuxCNC dialect's "
+                       "machine inputs are -i, -t, -v and --probe")
+    return parent
+
+
 def _positive(text: str) -> int:
     number = parse_positive(text)
     if number is None:
@@ -219,14 +232,42 @@ def _setup(command: str, options: argparse.Namespace) -> tuple[MachineOptions, S
     return machine, setup
 
 
-def _open_program(path: str) -> ProgramReader:
-    """A program file (``-``: standard input) as UTF-8 text: a leading byte-order mark skipped,
-    bytes that are not UTF-8 kept as surrogates, line ends as they are, read in rs274's pieces
-    (:mod:`ngc.interp.source`).  Raises ``OSError``."""
+def _open_binary(path: str) -> io.BufferedReader:
+    """A program file (``-``: standard input) as bytes.  Raises ``OSError``."""
     if path == "-":
-        stdin = open(sys.stdin.fileno(), "rb", closefd=False)  # noqa: SIM115 (the reader closes it)
-        return text_reader(stdin)
-    return open_text_program(path)
+        return open(sys.stdin.fileno(), "rb", closefd=False)
+    return open(path, "rb")
+
+
+class Program(NamedTuple):
+    """A program file, opened, and its dialect: the one given, else its first line's (see
+    :mod:`ngc.dialects`); ``handle`` reads it from its start, ``error`` says why it could not be
+    opened (it is reported after the machine inputs are loaded, as before dialects)."""
+
+    name: str
+    dialect: str
+    handle: io.BufferedReader | None
+    error: OSError | None
+
+    def close(self) -> None:
+        if self.handle is not None:
+            self.handle.close()
+
+
+def _open_marked(path: str, given: str | None) -> Program:
+    name = _name(path)
+    try:
+        handle = _open_binary(path)
+    except OSError as exc:
+        return Program(name, given or LINUXCNC, None, exc)
+    if given is not None:
+        return Program(name, given, handle, None)
+    try:
+        dialect, handle = dialects.of_stream(handle)
+    except OSError as exc:
+        handle.close()
+        return Program(name, LINUXCNC, None, exc)
+    return Program(name, dialect, handle, None)
 
 
 def _name(path: str) -> str:
@@ -234,44 +275,67 @@ def _name(path: str) -> str:
     return STDIN_NAME if path == "-" else os.fsencode(path).decode("utf-8", "surrogateescape")
 
 
-def _progress(name: str, handle: ProgramReader, *, output_to_terminal: bool) -> Progress:
+def _progress(name: str, handle: object, *, output_to_terminal: bool) -> Progress:
     """The progress line of a program file: on stderr, if it is a terminal and stdout is not
     (``ngc canon`` on a terminal shows its output instead)."""
     active = is_terminal(sys.stderr) and not output_to_terminal
     return Progress(sys.stderr, name, descriptor(handle), active=active)
 
 
-_ENGINE_MARK = re.compile(r"\s*(?:\(\s*dialect\s*:\s*engine\s*\)|;\s*dialect\s*:\s*engine)\s*$",
-                          re.IGNORECASE)
+# The LinuxCNC dialect's machine inputs, as options: (attribute, flag).
+LINUXCNC_INPUTS = (("ini_file", "-i"), ("tool_table", "-t"), ("var_file", "-v"),
+                   ("probe_file", "--probe"))
 
 
-def _dialect(options: argparse.Namespace) -> str:
-    """The dialect asked for, or the one the program's first line names (a file, not stdin)."""
-    if options.dialect is not None or options.file == "-":
-        return str(options.dialect or "linuxcnc")
+def _inputs_conflict(options: argparse.Namespace, dialect: str) -> str | None:
+    """Why the machine inputs given do not fit a program of ``dialect``, or None."""
+    if dialect == ENGINE:
+        given = [flag for attribute, flag in LINUXCNC_INPUTS
+                 if getattr(options, attribute) is not None]
+        if given:
+            return dialects.linuxcnc_inputs_refused(given)
+    elif options.setup_file is not None:
+        return dialects.SETUP_IS_ENGINES
+    return None
+
+
+def _engine_setup(options: argparse.Namespace) -> EngineSetup | None:
+    """The engine's setup sheet (``--setup``), read; raises :class:`NgcConfigError`."""
+    if options.setup_file is None:
+        return None
+    from .engine import read_setup
+
+    return read_setup(options.setup_file)
+
+
+def run_canon(options: argparse.Namespace) -> int:
+    """``ngc canon FILE``: interpreter start-up and program, streamed to stdout; or, in the
+    engine dialect, the engine's operations."""
+    program = _open_marked(options.file, options.dialect)
     try:
-        with open(options.file, "rb") as f:
-            first = f.readline(4096).decode("utf-8", "replace")
-    except OSError:
-        return "linuxcnc"
-    return "engine" if _ENGINE_MARK.match(first) else "linuxcnc"
+        conflict = _inputs_conflict(options, program.dialect)
+        if conflict is not None:
+            sys.stderr.write(f"ngc canon: {conflict}\n")
+            return EXIT_USAGE
+        if program.dialect == ENGINE:
+            return _canon_engine(options, program)
+        return _canon_linuxcnc(options, program)
+    finally:
+        program.close()
 
 
-def run_engine_canon(options: argparse.Namespace) -> int:
-    """``ngc canon --dialect engine FILE``: the engine dialect's operations, streamed."""
-    name = _name(options.file)
+def _canon_engine(options: argparse.Namespace, program: Program) -> int:
     try:
-        if options.file == "-":
-            text = sys.stdin.buffer.read().decode("utf-8", "surrogateescape")
-        else:
-            with open(options.file, "rb") as f:
-                text = f.read().decode("utf-8", "surrogateescape")
-    except OSError as exc:
-        sys.stderr.write(f"ngc canon: cannot open {name}: {exc.strerror}\n")
+        setup = _engine_setup(options)
+    except NgcConfigError as exc:
+        sys.stderr.write(f"ngc canon: {exc.message}\n")
         return EXIT_USAGE
+    if program.handle is None:
+        return _cannot_open("canon", program)
+    text = dialects.read_text(program.handle)
     try:
-        engine_output.write(engine.run(text.removeprefix("\ufeff"), file=name), sys.stdout,
-                            options.format)
+        dialects.interpret_engine(text, SINKS[options.format](sys.stdout), setup=setup,
+                                  file=program.name)
     except NgcError as exc:
         sys.stdout.flush()
         sys.stderr.write(exc.render() + "\n")
@@ -280,21 +344,22 @@ def run_engine_canon(options: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def run_canon(options: argparse.Namespace) -> int:
-    """``ngc canon FILE``: interpreter start-up and program, streamed to stdout."""
-    if _dialect(options) == "engine":
-        return run_engine_canon(options)
+def _cannot_open(command: str, program: Program) -> int:
+    reason = program.error.strerror if program.error is not None else None
+    sys.stderr.write(f"ngc {command}: cannot open {program.name}: {reason}\n")
+    return EXIT_USAGE
+
+
+def _canon_linuxcnc(options: argparse.Namespace, program: Program) -> int:
     try:
         machine, setup = _setup("canon", options)
     except NgcConfigError as exc:
         sys.stderr.write(f"ngc canon: {exc.message}\n")
         return EXIT_USAGE
-    name = _name(options.file)
-    try:
-        handle = _open_program(options.file)
-    except OSError as exc:
-        sys.stderr.write(f"ngc canon: cannot open {name}: {exc.strerror}\n")
-        return EXIT_USAGE
+    if program.handle is None:
+        return _cannot_open("canon", program)
+    name = program.name
+    handle = text_reader(program.handle)
     sink = SINKS[options.format](sys.stdout)
     interp = new_interpreter(sink, machine, setup)
     with handle, _progress(name, handle, output_to_terminal=is_terminal(sys.stdout)) as progress:
@@ -321,17 +386,26 @@ def run_check(options: argparse.Namespace) -> int:
     """``ngc check FILE...``: per file, the error (if any) on stderr and a summary (a paragraph,
     or a JSON object on one line) on stdout.  Nothing is written to disk.
 
-    Exit 2 if a file or a machine input cannot be read, else 1 if a program has an error, else 0.
+    Each file is in the dialect ``--dialect`` gives, else in the one its first line names; the
+    machine inputs of each dialect apply to its files (with ``--dialect``, those of the other
+    dialect are a usage error).  Exit 2 if a file or a machine input cannot be read, else 1 if a
+    program has an error, else 0.
     """
     from . import report  # loaded on use: ``ngc rs274`` starts without it
 
+    conflict = None if options.dialect is None else _inputs_conflict(options, options.dialect)
+    if conflict is not None:
+        sys.stderr.write(f"ngc check: {conflict}\n")
+        return EXIT_USAGE
     try:
-        machine, setup = _setup("check", options)
+        machine, setup = _setup("check", options) if options.dialect != ENGINE else (None, None)
+        engine_setup = _engine_setup(options)
     except NgcConfigError as exc:
         sys.stderr.write(f"ngc check: {exc.message}\n")
         return EXIT_USAGE
 
     def quiet(sink: Sink) -> Interpreter:
+        assert machine is not None and setup is not None
         return new_interpreter(sink, machine, setup, write_files=False)
 
     json_lines = options.format == "json"
@@ -339,25 +413,43 @@ def run_check(options: argparse.Namespace) -> int:
     for i, path in enumerate(options.files):
         if i and not json_lines:
             sys.stdout.write("\n")
-        name = _name(path)
-        try:
-            handle = _open_program(path)
-        except OSError as exc:
-            sys.stderr.write(f"ngc check: cannot open {name}: {exc.strerror}\n")
+        program = _open_marked(path, options.dialect)
+        if program.handle is None:
+            assert program.error is not None
+            _cannot_open("check", program)
             if json_lines:
-                sys.stdout.write(dumps(_unreadable(name, exc)) + "\n")
+                sys.stdout.write(dumps(_unreadable(program.name, program.error)) + "\n")
             code = EXIT_USAGE
             continue
-        with handle, _progress(name, handle, output_to_terminal=False) as progress:
-            result = report.check_lines(progress.lines(handle), name, quiet, reader=handle)
-        if result.error is not None:
-            sys.stderr.write(result.error.render() + "\n")
+        if program.dialect == ENGINE:
+            error, paragraph = _check_engine(program, engine_setup, json_lines)
+        else:
+            handle = text_reader(program.handle)
+            with handle, _progress(program.name, handle, output_to_terminal=False) as progress:
+                result = report.check_lines(progress.lines(handle), program.name, quiet,
+                                            reader=handle)
+            error = result.error
+            paragraph = dumps(report.record(result)) if json_lines else report.render(result)
+        if error is not None:
+            sys.stderr.write(error.render() + "\n")
             if code == EXIT_OK:
                 code = EXIT_PROGRAM_ERROR
-        sys.stdout.write((dumps(report.record(result)) if json_lines else report.render(result))
-                         + "\n")
+        sys.stdout.write(paragraph + "\n")
         sys.stdout.flush()
     return code
+
+
+def _check_engine(program: Program, setup: EngineSetup | None,
+                  json_lines: bool) -> tuple[NgcError | None, str]:
+    """``ngc check`` on an engine-dialect program: its first error and its report."""
+    from . import engine_report
+
+    assert program.handle is not None
+    with program.handle:
+        text = dialects.read_text(program.handle)
+    result = engine_report.check_text(text, program.name, setup)
+    return result.error, (dumps(engine_report.record(result)) if json_lines
+                          else engine_report.render(result))
 
 
 def _unreadable(name: str, exc: OSError) -> dict[str, object]:

@@ -16,12 +16,17 @@ import math
 import os
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Literal, overload
 
 from .canon import ops
 from .canon.ops import Op, Sink
 from .errors import NgcError
 from .interp.interpreter import Interpreter
 from .interp.source import ProgramReader, open_text_program
+
+if TYPE_CHECKING:
+    from .engine import Setup as EngineSetup
+    from .engine_report import EngineCheckResult
 
 MM_PER_UNIT = {"CANON_UNITS_MM": 1.0, "CANON_UNITS_INCHES": 25.4, "CANON_UNITS_CM": 10.0}
 UNIT_NAMES = {"CANON_UNITS_MM": "mm", "CANON_UNITS_INCHES": "inch", "CANON_UNITS_CM": "cm"}
@@ -339,6 +344,7 @@ class CheckResult:
     lines: int
     summary: Summary
     error: NgcError | None
+    dialect = "linuxcnc"  # (an engine program's is an ngc.engine_report.EngineCheckResult)
 
     @property
     def ok(self) -> bool:
@@ -380,11 +386,34 @@ def check_lines(
                        error=error)
 
 
-def check_file(path: str | os.PathLike[str]) -> CheckResult:
+@overload
+def check_file(path: str | os.PathLike[str], dialect: Literal["linuxcnc"], *,
+               setup: None = None) -> CheckResult: ...
+
+
+@overload
+def check_file(path: str | os.PathLike[str], dialect: Literal["engine"], *,
+               setup: EngineSetup | None = None) -> EngineCheckResult: ...
+
+
+@overload
+def check_file(path: str | os.PathLike[str], dialect: str | None = None, *,
+               setup: EngineSetup | None = None) -> CheckResult | EngineCheckResult: ...
+
+
+def check_file(path: str | os.PathLike[str], dialect: str | None = None, *,
+               setup: EngineSetup | None = None) -> CheckResult | EngineCheckResult:
     """Run a program file through an interpreter that writes no file, keeping only a summary of
     its motion (see :func:`ngc.report.check_lines`).  The file is read as UTF-8 (a byte that is not UTF-8
     is kept as a lone surrogate, see :mod:`ngc.canon.jsonl`); a leading byte-order mark is
     skipped.
+
+    ``dialect`` is ``"linuxcnc"`` or ``"engine"``; None: the one the program's first line names
+    (:mod:`ngc.dialects`), else ``"linuxcnc"``.  An engine program gives an
+    :class:`ngc.engine_report.EngineCheckResult` (the same ``path``, ``lines``, ``error`` and
+    ``ok``, and an :class:`~ngc.engine_report.EngineSummary`), run on the machine ``setup``
+    describes (:func:`ngc.engine.read_setup`; None: the default machine).  An unknown dialect,
+    or a ``setup`` for a LinuxCNC program, is a ``ValueError``.
 
     Raises ``OSError`` if the file cannot be read; errors in the program are returned in
     :attr:`CheckResult.error` (interpretation stops at the first one).
@@ -399,8 +428,21 @@ def check_file(path: str | os.PathLike[str]) -> CheckResult:
     >>> error = check_file(program).error
     >>> error.line, error.message
     (1, 'Cannot do g1 with zero feed rate')
+    >>> _ = program.write_text("(dialect: engine)\\nF10\\nfeed X3 Y4\\n")
+    >>> result = check_file(program)
+    >>> result.dialect, result.summary.segments["feed"], result.summary.time
+    ('engine', 1, 0.5)
     """
+    from . import dialects
+
     name = os.fspath(path)
+    chosen = dialects.checked(dialect) or dialects.of_file(name)
+    if chosen == dialects.ENGINE:
+        from . import engine_report
+
+        return engine_report.check_file(name, setup)
+    if setup is not None:
+        raise ValueError(dialects.API_SETUP_IS_ENGINES)
     with open_text_program(name) as reader:
         return check_lines(reader, name, reader=reader)
 

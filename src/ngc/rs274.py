@@ -29,10 +29,11 @@ from .canon.text import TextSink
 from .config.ini import Ini, Rs274ngcSettings
 from .config.tooltable import DEFAULT_TABLE, read_tool_table
 from .config.varfile import read_var_file, write_var_file
+from .dialects import DIALECTS, ENGINE, SETUP_IS_ENGINES, linuxcnc_inputs_refused, of_file
 from .errors import NgcConfigError, NgcError, NgcOpenError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .interp.interpreter import Interpreter
-from .interp.source import ProgramReader, open_program
+from .interp.source import BOM, ProgramReader, open_program
 from .options import MachineOptions, Setup, new_interpreter, parse_positive
 from .progress import Progress, descriptor, is_terminal
 from .recovery import Recovery
@@ -84,6 +85,14 @@ Options of ngc:
     --max-iterations N
               the work budget of a run: loop iterations and subroutine calls it may make
               before it stops with an error (a runaway program); default {DEFAULT_MAX_ITERATIONS}
+    --dialect linuxcnc|engine
+              the program's dialect: linuxcnc (rs274's, the default) or engine (seed 003's
+              codes by name; prints its operations as ngc canon does, errors as file:line:col);
+              without it, a program whose first line is '(dialect: engine)' is in the engine
+              dialect
+    --setup FILE
+              the engine dialect's machine setup sheet (TOML); -t, -v, -i, -b and -n 0|1 are
+              the LinuxCNC dialect's
     -h, --help
               print this help and exit
 
@@ -106,8 +115,9 @@ GETOPT_MESSAGES = {
 class Rs274Options:
     """The reference's command line, parsed (the parser sets what it reads)."""
 
-    __slots__ = ("batch", "block_delete", "help", "ini_file", "max_iterations", "on_error",
-                 "output", "print_stack", "program", "tool_table", "var_file")
+    __slots__ = ("batch", "block_delete", "dialect", "help", "ini_file", "max_iterations",
+                 "on_error", "output", "print_stack", "program", "setup_file", "tool_table",
+                 "var_file")
 
     def __init__(self) -> None:
         self.program: str | None = None
@@ -121,6 +131,8 @@ class Rs274Options:
         self.batch = False  # -g toggles
         self.max_iterations = DEFAULT_MAX_ITERATIONS  # --max-iterations (ngc only)
         self.help = False  # -h, --help (ngc only)
+        self.dialect: str | None = None  # --dialect (ngc only); None: the program's marker
+        self.setup_file: str | None = None  # --setup (ngc only): the engine's setup sheet
 
     def machine(self) -> MachineOptions:
         """The machine inputs, as every command takes them."""
@@ -131,7 +143,8 @@ class Rs274Options:
 def parse_args(argv: list[str]) -> Rs274Options:
     """Parse rs274's options; raises ``ValueError`` with the text to print on a bad command line."""
     try:
-        pairs, rest = getopt.gnu_getopt(argv, "p:t:v:i:n:bsgh", ["max-iterations=", "help"])
+        pairs, rest = getopt.gnu_getopt(argv, "p:t:v:i:n:bsgh",
+                                        ["max-iterations=", "help", "dialect=", "setup="])
     except getopt.GetoptError as err:
         raise ValueError(f"rs274: {_getopt_message(err)}\n{USAGE}") from None
     o = Rs274Options()
@@ -170,6 +183,13 @@ def _apply(o: Rs274Options, flag: str, value: str) -> None:
         if number is None:
             raise ValueError(f"ngc rs274: --max-iterations needs a positive number\n{USAGE}")
         o.max_iterations = number
+    elif flag == "--dialect":
+        if value not in DIALECTS:
+            raise ValueError(f"ngc rs274: --dialect must be linuxcnc or engine, not '{value}'\n"
+                             f"{USAGE}")
+        o.dialect = value
+    elif flag == "--setup":
+        o.setup_file = value
     elif flag == "-p":
         raise ValueError("rs274: -p (pluggable interpreters) is not supported\n")
 
@@ -246,6 +266,13 @@ def _run(argv: list[str], out: TextIO, err: TextIO, fast: bool = True,
     if o.program is None:
         err.write("ngc rs274: reading a program from standard input (MDI) is not supported\n")
         return 1
+    dialect = o.dialect or of_file(o.program)
+    conflict = _inputs_conflict(o, dialect)
+    if conflict is not None:
+        err.write(f"ngc rs274: {conflict}\n")
+        return 1
+    if dialect == ENGINE:
+        return _run_engine(o, out, err)
     err.write("executing\n")
     transcript: TextIO | None = None
     if o.output is not None:
@@ -260,6 +287,57 @@ def _run(argv: list[str], out: TextIO, err: TextIO, fast: bool = True,
     finally:
         if transcript is not None:
             transcript.close()
+
+
+def _inputs_conflict(o: Rs274Options, dialect: str) -> str | None:
+    """Why the options given do not fit a program of ``dialect``, or None."""
+    if dialect == ENGINE:
+        given = [flag for flag, value in (("-t", o.tool_table), ("-v", o.var_file),
+                                          ("-i", o.ini_file)) if value is not None]
+        given += ["-b"] if o.block_delete else []
+        given += [f"-n {o.on_error}"] if o.on_error != 2 else []
+        if given:
+            return linuxcnc_inputs_refused(given)
+    elif o.setup_file is not None:
+        return SETUP_IS_ENGINES
+    return None
+
+
+def _run_engine(o: Rs274Options, out: TextIO, err: TextIO) -> int:
+    """An engine-dialect program: its operations as ``ngc canon --dialect engine`` prints them,
+    on stdout or into the output file; an error as ``ngc canon`` reports it (exit 1).  The
+    program is read as bytes, one character each (latin-1), and written back as such."""
+    from .dialects import interpret_engine
+    from .engine import read_setup
+
+    try:
+        setup = None if o.setup_file is None else read_setup(o.setup_file)
+    except NgcConfigError as exc:
+        err.write(f"ngc rs274: {_as_read(exc.message)}\n")
+        return 1
+    name = _as_read(o.program or "")
+    try:
+        with open(o.program or "", "rb") as handle:
+            text = handle.read().removeprefix(BOM).decode("latin-1")
+    except OSError as exc:
+        err.write(f"ngc rs274: cannot open {name}: {exc.strerror}\n")
+        return 1
+    err.write("executing\n")
+    try:
+        target = out if o.output is None else open(  # noqa: SIM115 (closed below)
+            o.output, "w", encoding="latin-1", newline="\n")
+    except OSError:
+        err.write(f"could not open output file {_as_read(o.output or '')}\n")
+        return 1
+    try:
+        interpret_engine(text, TextSink(target), setup=setup, file=name)
+    except NgcError as exc:
+        err.write(exc.render() + "\n")
+        return 1
+    finally:
+        if target is not out:
+            target.close()
+    return 0
 
 
 def _interpret(o: Rs274Options, sink: TextSink, err: TextIO, fast: bool,

@@ -69,7 +69,9 @@ def dumps(record: Mapping[str, object]) -> str:
 class JsonSink:
     """Writes ``{"op": ..., "line": ..., "n": ..., <fields>}`` per operation, one per line
     (strict JSON, see the module docstring); ``(PRINT,...)`` text is ``{"op": "PRINT", "text":
-    ...}``."""
+    ...}``.  An engine-dialect operation (:mod:`ngc.engine`) is written as
+    ``ngc canon --dialect engine --format json`` writes it (:func:`ngc.engine.output.as_dict`);
+    anything else is a ``TypeError``."""
 
     __slots__ = ("_write",)
 
@@ -77,8 +79,15 @@ class JsonSink:
         self._write = stream.write
 
     def emit(self, op: Op, label: str, line: int) -> None:
+        try:
+            name = op_name(op)
+        except KeyError:  # not a canonical operation: an engine-dialect one, or a TypeError
+            from ..dialects import engine_record
+
+            self._write(dumps(engine_record(op)) + "\n")
+            return
         n = label[1:].strip()
-        record: dict[str, object] = {"op": op_name(op), "line": line}
+        record: dict[str, object] = {"op": name, "line": line}
         record["n"] = int(n) if n.isdigit() else None
         record.update(op._asdict())
         self._write(dumps(record) + "\n")
@@ -91,7 +100,9 @@ class JsonSink:
 
 
 class ListSink:
-    """Collects ``(op, label, line)`` in memory (tests, library users)."""
+    """Collects ``(op, label, line)`` in memory (tests, library users); in the engine dialect
+    (``ngc.interpret(..., dialect="engine")``) the ops are the engine's (:mod:`ngc.engine`) and
+    the label is the operation's name (``ENGINE_SEGMENT``, ``DWELL``, ...)."""
 
     __slots__ = ("ops", "printed")
 

@@ -26,9 +26,14 @@ _ARC_LINE = _LINES[ArcFeed]
 _ARC_HEAD = _HEADS[ArcFeed]
 
 
+_ENGINE = -1  # the "fields shown" of an engine-dialect operation: written as its own text
+
+
 def _format(kind: type) -> tuple[str, int]:
     """The line template of an op other than a move, and how many of its fields it shows (0:
-    all)."""
+    all; :data:`_ENGINE`: not a canonical operation, see :meth:`TextSink._engine_line`)."""
+    if kind not in TEMPLATES:
+        return "", _ENGINE
     return "%5d %s" + TEMPLATES[kind] + "\n", SHOWN.get(kind, 0)
 
 
@@ -47,7 +52,8 @@ class _Tail:
 
 
 class TextSink:
-    """Writes the rs274 transcript to a text stream.
+    """Writes the rs274 transcript to a text stream.  An engine-dialect operation
+    (:mod:`ngc.engine`) is written as ``ngc canon --dialect engine`` writes it.
 
     Lines are collected and written in batches (``flush`` writes the rest; call it at the end).
     """
@@ -81,6 +87,9 @@ class TextSink:
         except KeyError:
             template, shown = self._formats[kind] = _format(kind)
         if shown:
+            if shown == _ENGINE:
+                self._engine_line(op)
+                return
             op = op[:shown]  # type: ignore[index]
         count = self._count = self._count + 1
         # (a tuple concatenation is cheaper than unpacking into a new tuple)
@@ -123,6 +132,15 @@ class TextSink:
                 kept.a, kept.b, kept.c, kept.text = a, b, c, None
                 self._append(_LINES[kind] % (count, label, x, y, z, a, b, c))
         if not count & self.BATCH_MASK:
+            self.flush()
+
+    def _engine_line(self, op: object) -> None:
+        """An engine-dialect operation (:mod:`ngc.engine`), as ``ngc canon --dialect engine``
+        prints it (no counter, no N column); anything else is a ``TypeError``."""
+        from ..dialects import engine_text
+
+        self._append(engine_text(op) + "\n")
+        if len(self._lines) > self.BATCH_MASK:
             self.flush()
 
     def print_text(self, text: str) -> None:
