@@ -228,14 +228,10 @@ def _kinds(values: Mapping[str, float], number: str) -> str:
 
 def render(result: EngineCheckResult) -> str:
     """``ngc check``'s paragraph on an engine program (the error itself goes to stderr)."""
+    from .report import headline
+
     s = result.summary
-    error = result.error
-    if error is None:
-        head = f"{result.path}: ok"
-    elif error.line is None:
-        head = f"{result.path}: error"
-    else:
-        head = f"{result.path}: stopped by an error at line {error.line}"
+    head = headline(result.path, result.error)
     counts = ", ".join(f"{n} {kind}" for kind, n in s.segments.items())
     paragraph = [
         f"{head}, {result.lines} lines (engine dialect)",

@@ -463,19 +463,21 @@ class _CountedLines:
         return self.count + sum(1 for _ in self._lines)
 
 
+def headline(path: str, error: NgcError | None) -> str:
+    """The start of ``ngc check``'s paragraph on a file: ok, or where the error stopped it."""
+    if error is None:
+        return f"{path}: ok"
+    if error.line is None:
+        return f"{path}: error"
+    return f"{path}: stopped by an error at line {error.line}"
+
+
 def render(result: CheckResult) -> str:
     """``ngc check``'s report on one file: a paragraph with the line count, the moves, the path
     lengths and the extents (the error itself goes to stderr)."""
     s = result.summary
-    error = result.error
-    if error is None:
-        head = f"{result.path}: ok"
-    elif error.line is None:
-        head = f"{result.path}: error"
-    else:
-        head = f"{result.path}: stopped by an error at line {error.line}"
     paragraph = [
-        f"{head}, {result.lines} lines",
+        f"{headline(result.path, result.error)}, {result.lines} lines",
         f"  moves: {s.moves} ({s.traverses} traverse, {s.feeds} feed, {s.arcs} arc)",
         f"  rapid length: {s.rapid_length:.4f} {s.units}, "
         f"feed length: {s.feed_length:.4f} {s.units}",
