@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator
 
-from .motion import set_feed, straight
+from .motion import need_feed, set_feed, straight
 from .reading import Clauses, single
 from .state import AXIS, Dwell, Engine, EngineError, ModeChange, Op, Stop
 
@@ -82,8 +82,7 @@ def drill(eng: Engine, line: int, code: int, clauses: Clauses) -> Iterator[Op]:
         raise EngineError(f"{what} needs Q (the peck)")
     if code in _DWELLS and cycle.dwell is None:
         raise EngineError(f"{what} needs P (the dwell)")
-    if not eng.feed:
-        raise EngineError(f"{what} with no feed rate: set one with F")
+    need_feed(eng, what)
     offsets = eng.offsets()
     across = level(hole)
 

@@ -13,7 +13,7 @@ from collections.abc import Iterator
 from ..errors import NgcRuntimeError, NgcSemanticError, NgcSyntaxError
 from . import cycles, motion
 from .names import MOVE, NAMES, split_name
-from .reading import Clauses, clauses, reference, single, strip, tokens, value
+from .reading import clauses, reference, single, strip, tokens, value
 from .state import (
     AXES,
     AXIS,
@@ -34,9 +34,10 @@ from .state import (
 
 __all__ = ["Dwell", "Engine", "EngineError", "EngineSegment", "ModeChange", "Op", "Stop", "run"]
 
-_WHAT = {4: "G4 (dwell)", 15: "G15 (cancel polar coordinates)", 16: "G16 (set polar origin)",
-         43: "G43 (apply tool length offset)", 49: "G49 (cancel tool length offset)",
-         80: "G80 (cancel fixed cycles)", 92: "G92 (preset)", 100: "G100 (run)"}
+_WHAT = {1: "G1 (feed)", 4: "G4 (dwell)", 15: "G15 (cancel polar coordinates)",
+         16: "G16 (set polar origin)", 31: "G31 (probe)", 43: "G43 (apply tool length offset)",
+         49: "G49 (cancel tool length offset)", 80: "G80 (cancel fixed cycles)",
+         92: "G92 (preset)", 100: "G100 (run)"}
 _MOTION = {0: "rapid", 1: "feed", 31: "probe"}
 
 
@@ -80,6 +81,8 @@ def _moving(eng: Engine, line: int, code: int, words: list[str]) -> Iterator[Op]
     kind = _MOTION[code]
     made, ends, ops = motion.clauses_of(eng, line, clauses(words, eng.params), f"G{code}")
     yield from ops
+    if made and code != 0:
+        motion.need_feed(eng, _WHAT[code])
     yield from motion.segments(eng, line, made, kind)
     eng.along.update(ends)
     if code == 31:
@@ -274,23 +277,19 @@ def _code(eng: Engine, line: int, code: int, rest: list[str]) -> Iterator[Op]:
     elif code == 31:
         yield from _moving(eng, line, code, rest)
     elif code in (2, 3):
-        yield from motion.circle(eng, line, code, _clauses(eng, rest))
+        yield from motion.circle(eng, line, code, clauses(rest, eng.params))
     elif code == 4:
         yield from _dwell(eng, line, rest)
     elif code == 16:
         yield from _polar_on(eng, line, rest)
     elif code in cycles.WHAT:
-        yield from cycles.drill(eng, line, code, _clauses(eng, rest))
+        yield from cycles.drill(eng, line, code, clauses(rest, eng.params))
     elif code == 100:
         yield from _run_axes(eng, line, rest)
     else:
         if code in _MODAL:
             _no_arguments(code, rest)
         yield from _setting(eng, line, code, rest)
-
-
-def _clauses(eng: Engine, words: list[str]) -> Clauses:
-    return clauses(words, eng.params)
 
 
 def _line(eng: Engine, n: int, raw: str) -> Iterator[Op]:

@@ -210,6 +210,12 @@ def set_feed(eng: Engine, line: int, value: float) -> ModeChange:
     return ModeChange(line, "FEED_RATE", value)
 
 
+def need_feed(eng: Engine, what: str) -> None:
+    """A move at the feed rate (G1, G2, G3, G31, a drilling cycle) needs one."""
+    if not eng.feed:
+        raise EngineError(f"{what} with no feed rate: set one with F")
+
+
 def segments(eng: Engine, line: int, made: list[Clause], motion: str, pin_all: bool = False
              ) -> Iterator[Op]:
     """The engine segments of a move made of ``made`` clauses; the position follows.  Axes
@@ -217,8 +223,6 @@ def segments(eng: Engine, line: int, made: list[Clause], motion: str, pin_all: b
     names stop running.  With ``pin_all`` the last clause's ends hold for every axis."""
     if not made:
         return
-    if motion != "rapid" and not eng.feed:
-        raise EngineError(f"{_CODE[motion]} with no feed rate: set one with F")
     count = max(c.segments for c in made)
     start = list(eng.pos)
     pieces: list[dict[int, list[float]]] = []
@@ -284,9 +288,6 @@ def run_change(eng: Engine, line: int) -> ModeChange:
     """RUN: the axes running at constant speed, each as a percentage of its maximum speed."""
     return ModeChange(line, "RUN", {AXES[k]: 100.0 * s / eng.setup.max_speed[k]
                                     for k, s in sorted(eng.running.items())})
-
-
-_CODE = {"feed": "G1 (feed)", "arc": "G2/G3 (circle)", "probe": "G31 (probe)"}
 
 
 def duration(eng: Engine, motion: str, mm: dict[int, Cubic]) -> float:
@@ -355,8 +356,7 @@ def circle(eng: Engine, line: int, code: int, clauses: Clauses) -> Iterator[Op]:
         for k, t in made[0].ends.items():
             end[k] = t - offs[k]
     yield from ops
-    if not eng.feed:
-        raise EngineError(f"{what} with no feed rate: set one with F")
+    need_feed(eng, what)
     if radius_word is not None and given:
         raise EngineError(f"{what} takes I J K or R, not both")
     s = (prog[first], prog[second])
