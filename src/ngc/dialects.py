@@ -179,9 +179,9 @@ def linuxcnc_inputs_refused(flags: list[str]) -> str:
 
 
 # -- engine operations, for sinks -----------------------------------------------------------------
-def is_engine_op(op: object) -> bool:
-    """Whether ``op`` is one of the engine dialect's operations (:mod:`ngc.engine`)."""
-    return type(op).__module__.startswith("ngc.engine.")
+def _not_engine_op(op: object) -> TypeError:
+    return TypeError(f"{type(op).__name__} is neither a canonical operation (ngc.canon.ops) nor "
+                     "an engine-dialect operation (ngc.engine)")
 
 
 def engine_record(op: object) -> dict[str, object]:
@@ -189,10 +189,9 @@ def engine_record(op: object) -> dict[str, object]:
     ..., ...}``); ``TypeError`` for anything else."""
     from .engine import output
 
-    if not is_engine_op(op):
-        raise TypeError(f"{type(op).__name__} is neither a canonical operation "
-                        "(ngc.canon.ops) nor an engine-dialect operation (ngc.engine)")
-    return output.as_dict(op)  # type: ignore[arg-type]
+    if not output.is_op(op):
+        raise _not_engine_op(op)
+    return output.as_dict(op)
 
 
 def engine_text(op: object) -> str:
@@ -200,8 +199,9 @@ def engine_text(op: object) -> str:
     anything else."""
     from .engine import output
 
-    engine_record(op)  # refuses what is not an engine operation
-    return output.as_text(op)  # type: ignore[arg-type]
+    if not output.is_op(op):
+        raise _not_engine_op(op)
+    return output.as_text(op)
 
 
 def engine_ops(text: str, setup: EngineSetup | None = None,
@@ -222,7 +222,7 @@ def interpret_engine(text: str, sink: Any, *, setup: EngineSetup | None = None,
 
     try:
         for op in engine_ops(text, setup, file):
-            sink.emit(op, str(output.as_dict(op)["op"]), op.line)
+            sink.emit(op, output.name(op), op.line)
     finally:
         sink.flush()
 

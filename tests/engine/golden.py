@@ -18,21 +18,24 @@ import io
 import sys
 from pathlib import Path
 
-from ngc.engine import Engine, read_setup, run
-from ngc.engine.output import write
+import ngc
+from ngc.canon.text import TextSink
+from ngc.engine import read_setup
 from ngc.errors import NgcError
 
 CASES = Path(__file__).with_name("cases")
 
 
 def outcome(program: Path) -> tuple[str, str]:
-    """(operations as text, rendered error or "") of a case."""
+    """(operations as ``ngc canon --dialect engine`` prints them, rendered error or "") of a
+    case."""
     sheet = program.with_suffix(".toml")
-    engine = Engine(setup=read_setup(str(sheet))) if sheet.exists() else Engine()
+    setup = read_setup(str(sheet)) if sheet.exists() else None
     out = io.StringIO()
     err = ""
     try:
-        write(run(program.read_text(), engine, file=program.name), out, "text")
+        ngc.interpret(program.read_text(), TextSink(out), dialect="engine", setup=setup,
+                      file=program.name)
     except NgcError as exc:
         err = exc.render() + "\n"
     return out.getvalue(), err

@@ -3,10 +3,21 @@
 from __future__ import annotations
 
 import json
-from collections.abc import Iterable
-from typing import TextIO
+from typing import TypeGuard
 
-from .state import Dwell, EngineSegment, Op, Stop
+from .state import Dwell, EngineSegment, ModeChange, Op, Stop
+
+_NAMES = {EngineSegment: "ENGINE_SEGMENT", Dwell: "DWELL", Stop: "STOP"}
+
+
+def is_op(op: object) -> TypeGuard[Op]:
+    """Whether ``op`` is one of the engine dialect's operations."""
+    return type(op) in _NAMES or type(op) is ModeChange
+
+
+def name(op: Op) -> str:
+    """The operation's name, as its JSON ``"op"`` and its text have it."""
+    return op.name if isinstance(op, ModeChange) else _NAMES[type(op)]
 
 
 def as_dict(op: Op) -> dict[str, object]:
@@ -36,8 +47,3 @@ def as_text(op: Op) -> str:
         return f"STOP(line={op.line})"
     return f"{op.name}(line={op.line}, {json.dumps(op.value)})"
 
-
-def write(ops: Iterable[Op], out: TextIO, fmt: str) -> None:
-    """Each operation on a line of its own, as it comes (an error leaves the ones before it)."""
-    for op in ops:
-        out.write((json.dumps(as_dict(op)) if fmt == "json" else as_text(op)) + "\n")
