@@ -1,0 +1,1 @@
+"""The cycle-time planner behind ``ngc time``."""

@@ -1,0 +1,434 @@
+"""Loading the machine a program is timed on: from LinuxCNC's INI file, from ngc's TOML machine
+file, or both (the TOML file over the INI file's machine).  ``docs/machine.md`` documents both
+formats key by key.
+
+Every value is checked where it is read: a value that is not a number, a limit, period or cycle
+time that is not positive, an unknown key or a missing axis limit raises :class:`NgcConfigError`
+with a message that names the file, the key and the value.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import replace
+from types import MappingProxyType
+from typing import Any, NamedTuple, TypeVar
+
+from ..config.ini import BLANKS, Ini, parse_int, parse_real
+from ..config.tomlfile import read_toml
+from ..errors import NgcConfigError
+from .machine import ALL_AXES, DEFAULT_MACHINE, AxisLimits, Machine
+
+__all__ = ["load_machine", "machine_from_ini", "machine_from_toml"]
+
+T = TypeVar("T")
+
+# [TRAJ]LINEAR_UNITS (ini-config.adoc, [TRAJ] Section: "mm or inch").  Besides the names, a number
+# is read as machine units per millimetre, the form of older configurations: 1.0 is mm, 0.03937
+# (1/25.4, written with as many digits as one likes) is inch.
+UNIT_NAMES = {"mm": "mm", "metric": "mm", "inch": "inch", "in": "inch", "imperial": "inch"}
+UNITS_PER_MM = {"mm": 1.0, "inch": 1.0 / 25.4}
+UNITS_PER_MM_TOLERANCE = 1e-4  # relative: 0.03937 and 0.0393700787 are both inch
+NANOSECONDS_PER_SECOND = 1e9  # [EMCMOT]SERVO_PERIOD is in ns
+# Boolean INI values (ini-config.adoc, "INI File Components": case-insensitive words).
+INI_BOOLEANS = {"1": True, "TRUE": True, "YES": True, "ON": True,
+                "0": False, "FALSE": False, "NO": False, "OFF": False}
+LIMIT_KEYS = ("MAX_VELOCITY", "MAX_ACCELERATION")
+AXIS_LIST = " ".join(ALL_AXES)
+TOML_UNITS = ("mm", "inch")
+
+
+# --- LinuxCNC's INI file -------------------------------------------------------------------------
+
+
+def _positive_real(text: str) -> float | None:
+    value = parse_real(text)
+    return value if value is not None and math.isfinite(value) and value > 0.0 else None
+
+
+def _non_negative_real(text: str) -> float | None:
+    value = parse_real(text)
+    return value if value is not None and math.isfinite(value) and value >= 0.0 else None
+
+
+def _non_negative_int(text: str) -> int | None:
+    value = parse_int(text)
+    return value if value is not None and value >= 0 else None
+
+
+def _positive_int(text: str) -> int | None:
+    value = parse_int(text)
+    return value if value is not None and value > 0 else None
+
+
+def _nanoseconds(text: str) -> float | None:
+    value = _positive_int(text)
+    return None if value is None else value / NANOSECONDS_PER_SECOND
+
+
+def _boolean(text: str) -> bool | None:
+    return INI_BOOLEANS.get(text.strip(BLANKS).upper())
+
+
+def _linear_units(text: str) -> str | None:
+    name = UNIT_NAMES.get(text.strip(BLANKS).lower())
+    if name is not None:
+        return name
+    per_mm = parse_real(text)
+    for unit, expected in UNITS_PER_MM.items():
+        if per_mm is not None and math.isclose(per_mm, expected, rel_tol=UNITS_PER_MM_TOLERANCE):
+            return unit
+    return None
+
+
+POSITIVE = "a positive number"
+UNITS_EXPECTED = ("mm, inch (or in, metric, imperial) or the machine units per mm "
+                  "(1.0 for mm, 0.03937 for inch)")
+
+
+class IniKey(NamedTuple):
+    """A value of the INI file: where it is, how it is read, and what it must be (for messages)."""
+
+    section: str
+    key: str
+    convert: Callable[[str], object]  # the value, or None when the text is not one
+    expected: str
+
+
+# The Machine fields read from the INI file (the axes are read by _ini_axes).
+INI_FIELDS: Mapping[str, IniKey] = MappingProxyType({
+    "linear_units": IniKey("TRAJ", "LINEAR_UNITS", _linear_units, UNITS_EXPECTED),
+    "max_linear_velocity": IniKey("TRAJ", "MAX_LINEAR_VELOCITY", _positive_real, POSITIVE),
+    "max_linear_acceleration": IniKey("TRAJ", "MAX_LINEAR_ACCELERATION", _positive_real, POSITIVE),
+    "servo_period": IniKey("EMCMOT", "SERVO_PERIOD", _nanoseconds,
+                           "a positive whole number of nanoseconds"),
+    "task_cycle": IniKey("TASK", "CYCLE_TIME", _positive_real, "a positive number of seconds"),
+    "io_cycle": IniKey("EMCIO", "CYCLE_TIME", _positive_real, "a positive number of seconds"),
+    "arc_blend_enable": IniKey("TRAJ", "ARC_BLEND_ENABLE", _boolean,
+                               "a boolean (1, 0, TRUE, FALSE, YES, NO, ON, OFF)"),
+    "arc_blend_fallback_enable": IniKey("TRAJ", "ARC_BLEND_FALLBACK_ENABLE", _boolean,
+                                        "a boolean (1, 0, TRUE, FALSE, YES, NO, ON, OFF)"),
+    "arc_blend_optimization_depth": IniKey("TRAJ", "ARC_BLEND_OPTIMIZATION_DEPTH",
+                                           _non_negative_int, "a whole number, 0 or more"),
+    "arc_blend_gap_cycles": IniKey("TRAJ", "ARC_BLEND_GAP_CYCLES", _non_negative_real,
+                                   "a number, 0 or more"),
+    "arc_blend_ramp_freq": IniKey("TRAJ", "ARC_BLEND_RAMP_FREQ", _positive_real, POSITIVE),
+    "arc_blend_kink_ratio": IniKey("TRAJ", "ARC_BLEND_KINK_RATIO", _non_negative_real,
+                                   "a number, 0 or more"),
+})
+
+
+def _ini_error(ini: Ini, message: str) -> NgcConfigError:
+    where = f"INI file {ini.path}" if ini.path else "INI file"
+    return NgcConfigError(f"{where}: {message}", file=ini.path)
+
+
+def _ini_value(ini: Ini, section: str, key: str, convert: Callable[[str], T | None],
+               expected: str) -> T | None:
+    """``[section]key`` converted, ``None`` when absent; a value ``convert`` refuses is an error."""
+    text = ini.get(section, key)
+    if text is None:
+        return None
+    value = convert(text)
+    if value is None:
+        raise _ini_error(ini, f"[{section}]{key} is '{text}', not {expected}")
+    return value
+
+
+def _has_section(ini: Ini, name: str) -> bool:
+    """A ``[name]`` header is in the file (the header syntax of :class:`Ini`)."""
+    for line in ini.lines:
+        stripped = line.lstrip(BLANKS)
+        close = stripped.find("]")
+        if stripped.startswith("[") and close > 0 and stripped[1:close] == name:
+            return True
+    return False
+
+
+def _letters(ini: Ini, section: str, key: str, text: str, letters: str) -> str:
+    """Axis letters, blanks between them allowed, any case; anything else is an error."""
+    found = "".join(letters.split()).upper()
+    if not found or any(letter not in ALL_AXES for letter in found):
+        raise _ini_error(ini, f"[{section}]{key} is '{text}', not axis letters ({AXIS_LIST})")
+    return found
+
+
+def _ini_coordinates(ini: Ini) -> str:
+    """The axes: [TRAJ]COORDINATES (a letter may repeat, "X Y Y Z" for a gantry), or without it
+    the axes that have an [AXIS_<letter>] section."""
+    text = ini.get("TRAJ", "COORDINATES")
+    if text is None:
+        return "".join(axis for axis in ALL_AXES if _has_section(ini, f"AXIS_{axis}"))
+    return _letters(ini, "TRAJ", "COORDINATES", text, text)
+
+
+def _kins_coordinates(ini: Ini) -> str | None:
+    """The ``coordinates=`` parameter of [KINS]KINEMATICS (``trivkins coordinates=XZ``), if any."""
+    text = ini.get("KINS", "KINEMATICS")
+    for word in (text or "").split():
+        name, _, value = word.partition("=")
+        if name.lower() == "coordinates":
+            return _letters(ini, "KINS", "KINEMATICS", text or "", value)
+    return None
+
+
+def _ini_joints(ini: Ini, coordinates: str) -> str:
+    """The axis of each joint, joint 0 first.  Trivkins assigns joints in the order of its
+    coordinates (ini-config.adoc, [TRAJ]COORDINATES; "coordinates=xz": joint 0 is X, joint 1 Z):
+    the ``coordinates=`` of [KINS]KINEMATICS, else [TRAJ]COORDINATES; [KINS]JOINTS, when given,
+    says how many of them there are."""
+    order = _kins_coordinates(ini) or coordinates
+    count = _ini_value(ini, "KINS", "JOINTS", _positive_int, "a positive whole number")
+    return order if count is None else order[:count]
+
+
+def _limit_sections(axis: str, joints: str) -> list[str]:
+    return [f"AXIS_{axis}", *(f"JOINT_{n}" for n, letter in enumerate(joints) if letter == axis)]
+
+
+def _smallest(ini: Ini, sections: list[str], key: str) -> float | None:
+    """The smallest ``key`` of the sections that set it: an axis is as slow as its slowest part."""
+    values = [_ini_value(ini, section, key, _positive_real, POSITIVE) for section in sections]
+    found = [value for value in values if value is not None]
+    return min(found) if found else None
+
+
+def _ini_axes(ini: Ini) -> Mapping[str, AxisLimits]:
+    """Each axis's limits: the smaller of its [AXIS_<letter>] and its joints' [JOINT_<n>] values."""
+    coordinates = _ini_coordinates(ini)
+    joints = _ini_joints(ini, coordinates)
+    sections = {axis: _limit_sections(axis, joints) for axis in ALL_AXES if axis in coordinates}
+    found = {axis: [_smallest(ini, where, key) for key in LIMIT_KEYS]
+             for axis, where in sections.items()}
+    if not any(value is not None for limits in found.values() for value in limits):
+        raise _ini_error(ini, "no axis limits: MAX_VELOCITY and MAX_ACCELERATION are set in "
+                         f"no [AXIS_<letter>] or [JOINT_<n>] section of the axes "
+                         f"({' '.join(coordinates) or 'none'})")
+    axes: dict[str, AxisLimits] = {}
+    for axis, (velocity, acceleration) in found.items():
+        if velocity is None or acceleration is None:
+            key = LIMIT_KEYS[0] if velocity is None else LIMIT_KEYS[1]
+            where = " or ".join(f"[{section}]" for section in sections[axis])
+            raise _ini_error(ini, f"axis {axis} has no {key} (in {where})")
+        axes[axis] = AxisLimits(velocity, acceleration)
+    return MappingProxyType(axes)
+
+
+def machine_from_ini(ini: Ini) -> Machine:
+    """The machine of a LinuxCNC INI file; keys it does not set keep :class:`Machine`'s defaults.
+
+    The axes are those of [TRAJ]COORDINATES, each limited by the smaller of its [AXIS_<letter>]
+    and its joints' [JOINT_<n>] MAX_VELOCITY and MAX_ACCELERATION; an INI file that sets no axis
+    limits at all is an error.
+
+    >>> ini = Ini.parse("[TRAJ]\\nCOORDINATES = X Z\\nLINEAR_UNITS = inch\\n"
+    ...                 "[AXIS_X]\\nMAX_VELOCITY = 4\\nMAX_ACCELERATION = 30\\n"
+    ...                 "[JOINT_1]\\nMAX_VELOCITY = 2\\nMAX_ACCELERATION = 20\\n"
+    ...                 "[EMCMOT]\\nSERVO_PERIOD = 500000\\n")
+    >>> machine = machine_from_ini(ini)
+    >>> dict(machine.axes), machine.linear_units, machine.servo_period
+    ({'X': AxisLimits(max_velocity=4.0, max_acceleration=30.0), \
+'Z': AxisLimits(max_velocity=2.0, max_acceleration=20.0)}, 'inch', 0.0005)
+    """
+    fields: dict[str, Any] = {"axes": _ini_axes(ini)}
+    for name, spec in INI_FIELDS.items():
+        value = _ini_value(ini, *spec)
+        if value is not None:
+            fields[name] = value
+    return replace(DEFAULT_MACHINE, **fields)
+
+
+# --- ngc's TOML machine file ---------------------------------------------------------------------
+
+
+def _number(value: object, where: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+        raise ValueError(f"{where} must be a number, not {value!r}")
+    return float(value)
+
+
+def _positive(value: object, where: str) -> float:
+    number = _number(value, where)
+    if number <= 0.0:
+        raise ValueError(f"{where} must be positive, not {value!r}")
+    return number
+
+
+def _non_negative(value: object, where: str) -> float:
+    number = _number(value, where)
+    if number < 0.0:
+        raise ValueError(f"{where} must be 0 or more, not {value!r}")
+    return number
+
+
+def _count(value: object, where: str) -> int:
+    if isinstance(value, bool) or not isinstance(value, int) or value < 0:
+        raise ValueError(f"{where} must be a whole number, 0 or more, not {value!r}")
+    return value
+
+
+def _flag(value: object, where: str) -> bool:
+    if not isinstance(value, bool):
+        raise ValueError(f"{where} must be true or false, not {value!r}")
+    return value
+
+
+def _units(value: object, where: str) -> str:
+    if value not in TOML_UNITS:
+        raise ValueError(f"{where} must be \"mm\" or \"inch\", not {value!r}")
+    return str(value)
+
+
+Check = Callable[[object, str], object]
+
+# Top-level keys: TOML key -> (Machine field, check).
+TOML_SCALARS: Mapping[str, tuple[str, Check]] = MappingProxyType({
+    "units": ("linear_units", _units),
+    "max_linear_velocity": ("max_linear_velocity", _positive),
+    "max_linear_acceleration": ("max_linear_acceleration", _positive),
+    "servo_period": ("servo_period", _positive),
+    "task_cycle_time": ("task_cycle", _positive),
+    "io_cycle_time": ("io_cycle", _positive),
+    "tool_change_time": ("tool_change_time", _non_negative),
+    "spindle_start_time": ("spindle_start_time", _non_negative),
+    "spindle_stop_time": ("spindle_stop_time", _non_negative),
+})
+TOML_TABLES = ("coordinates", "axes", "blending", "start")
+TOML_BLENDING: Mapping[str, tuple[str, Check]] = MappingProxyType({
+    "enable": ("arc_blend_enable", _flag),
+    "fallback_enable": ("arc_blend_fallback_enable", _flag),
+    "optimization_depth": ("arc_blend_optimization_depth", _count),
+    "gap_cycles": ("arc_blend_gap_cycles", _non_negative),
+    "ramp_freq": ("arc_blend_ramp_freq", _positive),
+    "kink_ratio": ("arc_blend_kink_ratio", _non_negative),
+})
+TOML_AXIS_KEYS = ("max_velocity", "max_acceleration")
+
+
+def _unknown(where: str, key: str, allowed: tuple[str, ...] | Mapping[str, object]) -> ValueError:
+    prefix = f"{where}: " if where else ""
+    return ValueError(f"{prefix}unknown key '{key}' (allowed: {', '.join(allowed)})")
+
+
+def _table(value: object, where: str) -> Mapping[str, object]:
+    if not isinstance(value, dict):
+        raise ValueError(f"{where} must be a table, not {value!r}")
+    return value
+
+
+def _axis_letter(name: str, where: str) -> str:
+    if name not in ALL_AXES:
+        raise ValueError(f"{where}: '{name}' is not an axis (allowed: {', '.join(ALL_AXES)})")
+    return name
+
+
+def _fields(data: Mapping[str, object], where: str,
+            known: Mapping[str, tuple[str, Check]]) -> dict[str, Any]:
+    """The Machine fields of a table whose keys all map to one field each."""
+    fields: dict[str, Any] = {}
+    for key, value in data.items():
+        if key not in known:
+            raise _unknown(where, key, known)
+        name, check = known[key]
+        fields[name] = check(value, f"{where}.{key}" if where else key)
+    return fields
+
+
+def _toml_axis(name: str, entry: object, base: AxisLimits | None) -> AxisLimits:
+    """``[axes.<name>]``: a new axis needs both limits, an axis of ``base`` may change one."""
+    where = f"axes.{name}"
+    given: dict[str, float] = {}
+    for key, value in _table(entry, where).items():
+        if key not in TOML_AXIS_KEYS:
+            raise _unknown(where, key, TOML_AXIS_KEYS)
+        given[key] = _positive(value, f"{where}.{key}")
+    if base is None and len(given) < len(TOML_AXIS_KEYS):
+        missing = ", ".join(key for key in TOML_AXIS_KEYS if key not in given)
+        raise ValueError(f"{where}: a new axis needs max_velocity and max_acceleration "
+                         f"(missing: {missing})")
+    if base is not None:
+        given = {"max_velocity": base.max_velocity, "max_acceleration": base.max_acceleration,
+                 **given}
+    return AxisLimits(given["max_velocity"], given["max_acceleration"])
+
+
+def _coordinates(value: object) -> str:
+    letters = "".join(value.split()) if isinstance(value, str) else ""
+    if not letters or any(letter not in ALL_AXES for letter in letters):
+        raise ValueError(f"coordinates must be axis letters ({AXIS_LIST}), not {value!r}")
+    repeated = sorted({letter for letter in letters if letters.count(letter) > 1})
+    if repeated:
+        raise ValueError(f"coordinates names {', '.join(repeated)} more than once: {value!r}")
+    return letters
+
+
+def _toml_axes(data: Mapping[str, object], base: Mapping[str, AxisLimits]) -> dict[str, AxisLimits]:
+    """The axes: ``base``'s, with ``[axes]`` entries replacing or adding single axes, and only
+    those of ``coordinates`` when it is given."""
+    axes = dict(base)
+    entries = _table(data.get("axes", {}), "axes")
+    for name, entry in entries.items():
+        axis = _axis_letter(name, "axes")
+        axes[axis] = _toml_axis(axis, entry, base.get(axis))
+    if "coordinates" not in data:
+        return {axis: axes[axis] for axis in ALL_AXES if axis in axes}
+    coordinates = _coordinates(data["coordinates"])
+    for name in entries:
+        if name not in coordinates:
+            raise ValueError(f"axes.{name}: {name} is not in coordinates {coordinates!r}")
+    for axis in coordinates:
+        if axis not in axes:
+            raise ValueError(f"coordinates: axis {axis} has no limits (add [axes.{axis}] with "
+                             "max_velocity and max_acceleration)")
+    return {axis: axes[axis] for axis in ALL_AXES if axis in coordinates}
+
+
+def _start(value: object, base: Mapping[str, float], axes: Mapping[str, AxisLimits]
+           ) -> dict[str, float]:
+    """``[start]``: the start position, axis by axis, over ``base``'s (kept for axes that stay)."""
+    start = {axis: position for axis, position in base.items() if axis in axes}
+    for name, position in _table(value, "start").items():
+        if _axis_letter(name, "start") not in axes:
+            raise ValueError(f"start.{name}: the machine has no {name} axis "
+                             f"(its axes: {', '.join(axes)})")
+        start[name] = _number(position, f"start.{name}")
+    return {axis: start[axis] for axis in ALL_AXES if axis in start}
+
+
+def _machine_from_data(data: Mapping[str, object], base: Machine) -> Machine:
+    """``base`` with what the TOML file's tables say; ``ValueError`` names what is wrong."""
+    for key in data:
+        if key not in TOML_SCALARS and key not in TOML_TABLES:
+            raise _unknown("", key, (*TOML_SCALARS, *TOML_TABLES))
+    fields = _fields({k: v for k, v in data.items() if k in TOML_SCALARS}, "", TOML_SCALARS)
+    fields.update(_fields(_table(data.get("blending", {}), "blending"), "blending", TOML_BLENDING))
+    axes = _toml_axes(data, base.axes)
+    start = _start(data.get("start", {}), base.start_position, axes)
+    return replace(base, axes=MappingProxyType(axes), start_position=MappingProxyType(start),
+                   **fields)
+
+
+def machine_from_toml(path: str, base: Machine = DEFAULT_MACHINE) -> Machine:
+    """``base`` with what ngc's TOML machine file at ``path`` sets (``docs/machine.md``).
+
+    The keys given replace ``base``'s values, ``[axes.<letter>]`` tables replace or add single
+    axes, ``coordinates`` keeps only the axes it names.  A file that is not a regular file, cannot
+    be read or parsed, or has an unknown key or a wrong value is an :class:`NgcConfigError` whose
+    message names the file and the key.
+    """
+    from ..options import require_regular_file  # the loader of the other machine inputs
+
+    require_regular_file(path, "machine file")
+    return read_toml(path, "machine file", lambda data: _machine_from_data(data, base))
+
+
+def load_machine(ini: Ini | None, toml_path: str | None) -> Machine:
+    """The machine of ``ngc time``: :data:`DEFAULT_MACHINE`, or the INI file's machine, with the
+    TOML machine file (if any) over it.
+
+    >>> load_machine(None, None) == DEFAULT_MACHINE
+    True
+    """
+    machine = DEFAULT_MACHINE if ini is None else machine_from_ini(ini)
+    return machine if toml_path is None else machine_from_toml(toml_path, machine)
