@@ -1,0 +1,183 @@
+"""The shapes the planner moves along: straight lines and circular arcs (helices), in machine
+coordinates, each measured by its path length.
+
+A position is a 6-tuple ``(x, y, z, a, b, c)``.  A path's length is its length in X Y Z, or, for a
+move of A B C alone, its angular length.  :func:`blend_arc` finds the arc that rounds the corner
+between two lines.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+Vec = tuple[float, float, float]
+Pos = tuple[float, float, float, float, float, float]
+
+EPS = 1e-12
+
+
+def sub(p: Vec, q: Vec) -> Vec:
+    return (p[0] - q[0], p[1] - q[1], p[2] - q[2])
+
+
+def dot(p: Vec, q: Vec) -> float:
+    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]
+
+
+def cross(p: Vec, q: Vec) -> Vec:
+    return (p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0])
+
+
+def norm(p: Vec) -> float:
+    return math.sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
+
+
+def unit(p: Vec) -> Vec:
+    n = norm(p)
+    if n < EPS:
+        return (0.0, 0.0, 0.0)
+    return (p[0] / n, p[1] / n, p[2] / n)
+
+
+def angle_between(u: Vec, v: Vec) -> float:
+    """The angle between two unit vectors, accurate for small and large angles."""
+    return 2.0 * math.atan2(norm(sub(u, v)), norm((u[0] + v[0], u[1] + v[1], u[2] + v[2])))
+
+
+class Line(NamedTuple):
+    """A straight move from ``start`` to ``end``; ``length`` as defined above."""
+
+    start: Pos
+    end: Pos
+    length: float
+
+    def point(self, s: float) -> Pos:
+        f = s / self.length if self.length > 0.0 else 1.0
+        p, q = self.start, self.end
+        return (p[0] + (q[0] - p[0]) * f, p[1] + (q[1] - p[1]) * f, p[2] + (q[2] - p[2]) * f,
+                p[3] + (q[3] - p[3]) * f, p[4] + (q[4] - p[4]) * f, p[5] + (q[5] - p[5]) * f)
+
+    def start_direction(self) -> Vec:
+        p, q = self.start, self.end
+        return unit((q[0] - p[0], q[1] - p[1], q[2] - p[2]))
+
+    def end_direction(self) -> Vec:
+        return self.start_direction()
+
+
+class Arc(NamedTuple):
+    """A circular arc, or a helix along the plane's normal: ``center`` (X Y Z of the circle's
+    centre at the start), the orthonormal in-plane directions ``e1`` (centre to start) and ``e2``
+    (the way the arc turns at the start), ``radius``, the angle ``sweep`` (> 0, radians), the
+    ``rise`` along ``normal`` over the whole arc, the A B C at the start and at the end."""
+
+    center: Vec
+    e1: Vec
+    e2: Vec
+    normal: Vec
+    radius: float
+    sweep: float
+    rise: float
+    abc0: Vec
+    abc1: Vec
+    length: float
+
+    def point(self, s: float) -> Pos:
+        f = s / self.length if self.length > 0.0 else 1.0
+        ang = self.sweep * f
+        c, s_ = math.cos(ang) * self.radius, math.sin(ang) * self.radius
+        h = self.rise * f
+        o, e1, e2, n = self.center, self.e1, self.e2, self.normal
+        a0, a1 = self.abc0, self.abc1
+        return (o[0] + c * e1[0] + s_ * e2[0] + h * n[0],
+                o[1] + c * e1[1] + s_ * e2[1] + h * n[1],
+                o[2] + c * e1[2] + s_ * e2[2] + h * n[2],
+                a0[0] + (a1[0] - a0[0]) * f, a0[1] + (a1[1] - a0[1]) * f,
+                a0[2] + (a1[2] - a0[2]) * f)
+
+    def direction(self, ang: float) -> Vec:
+        arc = self.radius * self.sweep
+        c, s = math.cos(ang), math.sin(ang)
+        e1, e2, n = self.e1, self.e2, self.normal
+        return unit((arc * (-s * e1[0] + c * e2[0]) + self.rise * n[0],
+                     arc * (-s * e1[1] + c * e2[1]) + self.rise * n[1],
+                     arc * (-s * e1[2] + c * e2[2]) + self.rise * n[2]))
+
+    def start_direction(self) -> Vec:
+        return self.direction(0.0)
+
+    def end_direction(self) -> Vec:
+        return self.direction(self.sweep)
+
+    @property
+    def start(self) -> Pos:
+        return self.point(0.0)
+
+    @property
+    def end(self) -> Pos:
+        return self.point(self.length)
+
+
+def arc_from_canon(start: Pos, end: Pos, center: Vec, normal: Vec, turns: int) -> Arc:
+    """The arc LinuxCNC's ``ARC_FEED`` describes: from ``start`` to ``end`` about the axis through
+    ``center`` along ``normal`` (a unit axis vector: the plane's normal), ``turns`` > 0
+    counterclockwise seen from the normal's tip, < 0 clockwise, |turns| - 1 extra full turns."""
+    p0 = start[:3]
+    rise_vec = sub(end[:3], p0)
+    rise = dot(rise_vec, normal)
+    # project the centre into the start's plane
+    off = sub(p0, center)
+    off_n = dot(off, normal)
+    c0 = (center[0] + normal[0] * off_n, center[1] + normal[1] * off_n,
+          center[2] + normal[2] * off_n)
+    r_vec = sub(p0, c0)
+    radius = norm(r_vec)
+    e1 = unit(r_vec)
+    e2 = cross(normal, e1)
+    if turns < 0:
+        e2 = (-e2[0], -e2[1], -e2[2])
+    end_in_plane = sub(sub(end[:3], c0), (normal[0] * rise, normal[1] * rise,
+                                          normal[2] * rise))
+    ang = math.atan2(dot(end_in_plane, e2), dot(end_in_plane, e1))
+    if ang <= 1e-12:
+        ang += 2.0 * math.pi
+    sweep = ang + 2.0 * math.pi * (abs(turns) - 1)
+    arc_len = radius * sweep
+    length = math.hypot(arc_len, rise)
+    if length < EPS:
+        length = norm(sub(end[3:], start[3:]))
+    return Arc(c0, e1, e2, normal, radius, sweep, rise, start[3:], end[3:], length)
+
+
+class Blend(NamedTuple):
+    """The arc that rounds a corner: its radius, the length cut from each line, its length and
+    the greatest speed it allows."""
+
+    radius: float
+    trim: float
+    length: float
+    speed: float
+
+
+def blend_arc(theta: float, goal: float, room: float, tolerance: float,
+              tangential: float, normal: float) -> Blend | None:
+    """The corner arc for a turn of ``theta`` radians between two lines, for a wanted speed
+    ``goal``; ``room`` is the most each line may give, ``tolerance`` how far the arc may pass from
+    the corner (0: no limit); ``tangential`` and ``normal`` are the arc's acceleration limits.
+
+    The radius is the smallest that keeps the goal speed within the normal limit and makes the
+    arc at least goal² / tangential long, unless room or tolerance allow less."""
+    if theta <= 0.0 or theta >= math.pi - 1e-6:
+        return None
+    half = 0.5 * theta
+    tan_half = math.tan(half)
+    r_goal = max(goal * goal / normal, goal * goal / (tangential * theta))
+    r = min(r_goal, room / tan_half)
+    if tolerance > 0.0:
+        cos_half = math.cos(half)
+        r = min(r, tolerance * cos_half / (1.0 - cos_half))
+    if r <= EPS:
+        return None
+    speed = min(goal, math.sqrt(normal * r))
+    return Blend(r, r * tan_half, r * theta, speed)

@@ -1,0 +1,333 @@
+"""The look-ahead planner: joins moves the way LinuxCNC 2.9's trajectory planner does, as observed
+on its motion controller (see ``docs/time.md``), and times them.
+
+Moves come in with :meth:`Planner.add`; :meth:`Planner.stop` ends motion (a dwell, an M-code, the
+end of the program).  A move's end is decided when the next one comes: in blend mode (G64) a
+corner between two lines is rounded by an arc, a (nearly) tangent join is passed at speed, other
+joins stop.  A backward pass gives each move the speed it may end with so that every later move
+can still slow down in time; a forward pass then runs each move's speed profile (a trapezoid) from
+the speed the move before really ended with.  Finished moves go to the ``done`` callback with their
+times, so memory stays bounded by the look-ahead window.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from collections.abc import Callable
+
+from .geometry import Arc, Line, Pos, Vec, angle_between, blend_arc, cross, unit
+from .machine import Machine
+
+# How a move ends (LinuxCNC's "termination conditions").
+STOP = 0  # exact stop (G61.1): speed 0 at the end
+EXACT = 1  # exact path (G61): speed 0 at a corner, tangent joins passed
+TANGENT = 2  # joined at speed to the next move
+PARABOLIC = 3  # blend mode (G64) with no arc: half acceleration, ramps overlap the next move's
+
+RAPID, FEED, ARC, BLEND = "rapid", "feed", "arc", "blend"
+
+Shape = Line | Arc
+
+SQRT3_2 = math.sqrt(3.0) / 2.0
+
+
+class Segment:
+    """One move for the planner."""
+
+    __slots__ = (
+        "accel",
+        "end_dir",
+        "full_length",
+        "is_line",
+        "kind",
+        "length",
+        "line",
+        "mode",
+        "naive",
+        "overlap",
+        "parts",
+        "peak",
+        "plane_accel",
+        "reduce",
+        "shape",
+        "start_dir",
+        "t0",
+        "term",
+        "time",
+        "tolerance",
+        "tool",
+        "vend",
+        "vfinal",
+        "vin",
+        "vmax",
+        "vout",
+    )
+
+    def __init__(self, kind: str, line: int, tool: int, shape: Shape, vmax: float, accel: float,
+                 plane_accel: float, mode: int, tolerance: float, naive: float) -> None:
+        self.kind = kind
+        self.line = line
+        self.tool = tool
+        self.shape = shape
+        self.length = shape.length
+        self.full_length = shape.length
+        self.vmax = vmax
+        self.accel = accel  # tangential acceleration limit
+        self.plane_accel = plane_accel
+        self.mode = mode  # the term condition the mode in force asks for
+        self.tolerance = tolerance
+        self.term = mode
+        self.vend = 0.0  # greatest speed at the join with the next move
+        self.vfinal = 0.0  # speed planned at the end (backward pass)
+        self.reduce = 1.0  # acceleration factor left after a kink or an exact-path corner
+        self.is_line = isinstance(shape, Line)
+        self.start_dir: Vec = shape.start_direction()
+        self.end_dir: Vec = shape.end_direction()
+        self.naive = naive
+        self.time = 0.0
+        self.vin = 0.0
+        self.vout = 0.0
+        self.t0 = 0.0
+        self.overlap = 0.0
+        self.peak = 0.0
+        self.parts: list[tuple[Pos, int, float]] | None = None
+
+    def effective_accel(self) -> float:
+        a = self.accel * self.reduce
+        if self.term == PARABOLIC:
+            a *= 0.5
+        return a
+
+
+Done = Callable[[Segment], None]
+
+
+def profile_time(v0: float, v1: float, vmax: float, a: float, length: float) -> tuple[float, float,
+                                                                                       float]:
+    """Time, end speed and peak speed of a trapezoid over ``length`` from ``v0`` toward ``v1``
+    with acceleration ``a`` and speed limit ``vmax``."""
+    if length <= 0.0:
+        return 0.0, v0, v0
+    reach = math.sqrt(v0 * v0 + 2.0 * a * length)
+    if v1 > reach:
+        v1 = reach
+    if vmax < v0:
+        vmax = v0
+    if vmax < v1:
+        vmax = v1
+    vp2 = a * length + 0.5 * (v0 * v0 + v1 * v1)
+    vp = math.sqrt(vp2)
+    if vp > vmax:
+        vp = vmax
+    if vp <= 0.0:
+        return 0.0, 0.0, 0.0
+    if vp < v0:  # cannot slow down in time (look-ahead too short): slow down as one can
+        vp = v0
+    d_acc = (vp * vp - v0 * v0) / (2.0 * a)
+    d_dec = (vp * vp - v1 * v1) / (2.0 * a)
+    cruise = length - d_acc - d_dec
+    if cruise < 0.0:
+        cruise = 0.0
+    return (vp - v0) / a + (vp - v1) / a + cruise / vp, v1, vp
+
+
+class Planner:
+    """Plans and times a stream of segments on ``machine``; ``done`` receives each segment once
+    its time is known."""
+
+    def __init__(self, machine: Machine, done: Done) -> None:
+        self.machine = machine
+        self.period = machine.servo_period
+        self.kink_ratio = machine.arc_blend_kink_ratio
+        self.depth = max(1, machine.arc_blend_optimization_depth)
+        self.axis_accel = [lim.max_acceleration if lim else 0.0
+                           for lim in (machine.axes.get(a) for a in "XYZ")]
+        self.queue: deque[Segment] = deque()
+        self.done = done
+        self.clock = 0.0  # time at which the current group of joined moves started
+        self.group = 0.0  # time of the moves run since the last stop
+        self.vnow = 0.0  # speed at the end of the last move run
+        self.started = False
+        self.first_motion: float | None = None
+
+    # -- adding moves ------------------------------------------------------------------------
+    def add(self, seg: Segment) -> None:
+        q = self.queue
+        if q:
+            prev = q[-1]
+            self._join(prev, seg)
+        q.append(seg)
+        self._backward()
+        while len(q) > self.depth + 2:
+            self._run(q.popleft())
+
+    def _join(self, prev: Segment, seg: Segment) -> None:
+        """Decide how ``prev`` ends, now that ``seg`` follows it."""
+        mode = prev.mode
+        if mode == STOP or prev.length <= 0.0:
+            prev.term = STOP
+            return
+        u1, u2 = prev.end_dir, seg.start_dir
+        theta = angle_between(u1, u2)
+        vmax = min(prev.vmax, seg.vmax)
+        if theta < 1e-9:
+            prev.term = TANGENT
+            prev.vend = vmax
+            return
+        # The join is a kink the axes can take in one servo cycle at full speed: the change of
+        # velocity, per axis, needs at most the kink ratio of that axis's acceleration.
+        need = 0.0
+        for i, lim in enumerate(self.axis_accel):
+            du = abs(u2[i] - u1[i])
+            if du > 0.0 and lim > 0.0:
+                need = max(need, du / lim)
+        need *= vmax / self.period
+        if need < self.kink_ratio:
+            prev.term = TANGENT
+            prev.vend = vmax
+            used = 1.0 - need
+            prev.reduce = min(prev.reduce, used)
+            seg.reduce = min(seg.reduce, used)
+            return
+        if mode == EXACT:
+            prev.term = EXACT
+            factor = 1.0 - max(self.kink_ratio, 0.001)
+            prev.reduce = min(prev.reduce, factor)
+            seg.reduce = min(seg.reduce, factor)
+            return
+        # blend mode
+        if (self.machine.arc_blend_enable and prev.is_line and seg.is_line
+                and prev.kind != BLEND):
+            blend = self._blend(prev, seg, theta)
+            if blend is not None:
+                return
+        prev.term = PARABOLIC
+
+    def _blend(self, prev: Segment, seg: Segment, theta: float) -> Segment | None:
+        u1, u2 = prev.end_dir, seg.start_dir
+        # acceleration and speed limits in the plane of the corner
+        cos_t = u1[0] * u2[0] + u1[1] * u2[1] + u1[2] * u2[2]
+        w = unit((u2[0] - cos_t * u1[0], u2[1] - cos_t * u1[1], u2[2] - cos_t * u1[2]))
+        amax, vlim = self._plane_limits(u1, w)
+        goal = min(max(prev.vmax, seg.vmax), vlim)
+        room = 0.5 * min(prev.full_length, seg.full_length)
+        room = min(room, prev.length, seg.length)
+        b = blend_arc(theta, goal, room, prev.tolerance, 0.5 * amax, SQRT3_2 * amax)
+        if b is None or b.trim <= 0.0:
+            return None
+        pl, sl = prev.shape, seg.shape
+        assert isinstance(pl, Line) and isinstance(sl, Line)
+        corner = pl.end
+        d = b.trim
+        # trim both lines
+        p_end = pl.point(pl.length - d)
+        s_start = sl.point(d)
+        prev.shape = Line(pl.start, p_end, pl.length - d)
+        prev.length = prev.shape.length
+        seg.shape = Line(s_start, sl.end, sl.length - d)
+        seg.length = seg.shape.length
+        center = (p_end[0] + w[0] * b.radius, p_end[1] + w[1] * b.radius,
+                  p_end[2] + w[2] * b.radius)
+        e1 = (-w[0], -w[1], -w[2])
+        normal = cross(e1, u1)
+        abc = corner[3:]
+        arc = Arc(center, e1, u1, normal, b.radius, theta, 0.0, abc, abc, b.length)
+        vmax = min(b.speed, self._short_cap(b.length))
+        blend = Segment(BLEND, prev.line, prev.tool, arc, vmax, 0.5 * amax, amax, prev.mode,
+                        prev.tolerance, 0.0)
+        prev.term = TANGENT
+        prev.vend = vmax
+        blend.term = TANGENT
+        blend.vend = vmax
+        # the blend goes between prev and seg
+        self.queue.append(blend)
+        return blend
+
+    def _plane_limits(self, e1: Vec, e2: Vec) -> tuple[float, float]:
+        """Acceleration and speed any direction in the plane of ``e1`` and ``e2`` can have."""
+        axes = self.machine.axes
+        a = v = math.inf
+        for i, name in enumerate("XYZ"):
+            comp = math.hypot(e1[i], e2[i])
+            if comp > 1e-9:
+                lim = axes.get(name)
+                if lim is not None:
+                    a = min(a, lim.max_acceleration / comp)
+                    v = min(v, lim.max_velocity / comp)
+        if self.machine.max_linear_velocity is not None:
+            v = min(v, self.machine.max_linear_velocity)
+        return a, v
+
+    def _short_cap(self, length: float) -> float:
+        return length / (2.0 * self.period)
+
+    # -- planning ------------------------------------------------------------------------------
+    def _backward(self) -> None:
+        q = self.queue
+        n = len(q)
+        nxt = q[-1]
+        nxt.vfinal = 0.0
+        i = n - 2
+        count = 0
+        while i >= 0 and count < self.depth:
+            seg = q[i]
+            if seg.term != TANGENT:
+                v = 0.0
+            else:
+                a = nxt.effective_accel()
+                v = math.sqrt(nxt.vfinal * nxt.vfinal + 2.0 * a * nxt.length)
+                if v > seg.vend:
+                    v = seg.vend
+                if v > nxt.vmax:
+                    v = nxt.vmax
+                if v > seg.vmax:
+                    v = seg.vmax
+            if v == seg.vfinal and count > 0:
+                break
+            seg.vfinal = v
+            nxt = seg
+            i -= 1
+            count += 1
+
+    # -- running ------------------------------------------------------------------------------
+    def _run(self, seg: Segment) -> None:
+        a = seg.effective_accel()
+        t, vout, peak = profile_time(self.vnow, seg.vfinal, seg.vmax, a, seg.length)
+        seg.vin = self.vnow
+        seg.vout = vout
+        seg.peak = peak
+        seg.time = t
+        seg.t0 = self.clock + self.group
+        self.group += t
+        self.vnow = vout
+        if seg.term != TANGENT or vout <= 0.0:
+            self._settle()
+        self.done(seg)
+
+    def _settle(self) -> None:
+        """Motion has come to rest: round the group of joined moves to whole servo cycles."""
+        if self.group > 0.0:
+            cycles = math.ceil(self.group / self.period - 1e-6)
+            self.clock += cycles * self.period
+        self.group = 0.0
+        self.vnow = 0.0
+
+    def stop(self) -> None:
+        """Motion stops after the moves given so far (the queue drains)."""
+        q = self.queue
+        if q:
+            q[-1].term = q[-1].mode
+            self._backward()
+        while q:
+            self._run(q.popleft())
+        self._settle()
+
+    def wait(self, seconds: float) -> None:
+        """Stand still for ``seconds`` after motion has stopped."""
+        self.stop()
+        self.clock += seconds
+
+    @property
+    def total(self) -> float:
+        return self.clock + self.group

@@ -1,0 +1,332 @@
+"""From canonical operations to the planner's segments: a sink that follows the machine's state
+(units, offsets, feed, the blending mode, the tool) and turns each move into a
+:class:`~ngc.planner.lookahead.Segment` in machine coordinates, with its speed and acceleration
+limits projected from the axes' limits.
+
+What it models of LinuxCNC's task and canon layers (``docs/time.md``):
+
+* ``G64 P… Q…``: straight feeds at one feed rate that stay within the naive-CAM tolerance Q of a
+  straight line are merged into one move before the planner sees them; in the XY plane an arc that
+  leaves its chord by less than Q is first split into two lines;
+* every operation task has to wait for (a dwell, spindle, coolant, a tool change, a program stop,
+  a probe) makes the machine stop there, and stand still for the time it takes.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from typing import Any
+
+from ..canon import ops
+from .geometry import Line, Pos, arc_from_canon
+from .lookahead import ARC, EXACT, FEED, PARABOLIC, RAPID, STOP, Planner, Segment
+from .machine import Machine
+
+MM_PER_INCH = 25.4
+AXES6 = "XYZABC"
+
+# Each plane's (first axis, second axis, normal axis) index, as ARC_FEED gives them.
+PLANES = {"CANON_PLANE_XY": (0, 1, 2), "CANON_PLANE_YZ": (1, 2, 0),
+          "CANON_PLANE_XZ": (2, 0, 1)}
+
+# Operations that make task wait for motion to stop, by kind of wait.
+SPINDLE_START = (ops.StartSpindleClockwise, ops.StartSpindleCounterclockwise)
+WAITS = (ops.StopSpindleTurning, ops.MistOn, ops.MistOff, ops.FloodOn, ops.FloodOff,
+         ops.ProgramStop, ops.OptionalProgramStop, ops.OrientSpindle, ops.WaitOrientComplete,
+         ops.PalletShuttle, ops.StartChange, *SPINDLE_START)
+
+Wait = Callable[[str, float, int], None]
+
+
+class PathSink:
+    """A canon sink that feeds a :class:`Planner`.  ``on_wait(kind, seconds, line)`` hears of
+    every standstill (a dwell, a tool change, a spindle start or stop)."""
+
+    def __init__(self, machine: Machine, planner: Planner, on_wait: Wait) -> None:
+        self.machine = machine
+        self.planner = planner
+        self.on_wait = on_wait
+        self.inch_machine = machine.linear_units == "inch"
+        self.scale = 1.0  # program units to machine units
+        start = machine.start_position
+        self.pos: Pos = tuple(float(start.get(a, 0.0)) for a in AXES6)  # type: ignore[assignment]
+        self.g5x = [0.0] * 6
+        self.g92 = [0.0] * 6
+        self.tlo = [0.0] * 6
+        self.rot = 0.0
+        self.cos_r, self.sin_r = 1.0, 0.0
+        self.plane = PLANES["CANON_PLANE_XY"]
+        self.feed = 0.0  # program units per minute
+        self.per_rev = False
+        self.rpm = 0.0
+        self.mode = STOP  # rs274 starts in exact-path? (set by the program's first mode call)
+        self.mode = EXACT
+        self.tolerance = 0.0  # machine units; 0: none
+        self.naive_tol = 0.0  # machine units
+        self.tool = 0
+        self.selected = 0
+        self.spindle_on = False
+        self.chain: list[tuple[Pos, int, float]] = []  # naive-CAM: points after chain_start
+        self.chain_start: Pos = self.pos
+        self.chain_feed = 0.0
+        limits = []
+        for name in AXES6:
+            lim = machine.axes.get(name)
+            limits.append((lim.max_velocity, lim.max_acceleration) if lim else None)
+        self.limits = limits
+        self.vcap = machine.max_linear_velocity
+
+    # -- the sink protocol --------------------------------------------------------------------
+    def emit(self, op: ops.Op, label: str, line: int) -> None:
+        kind = type(op)
+        if kind is ops.StraightFeed:
+            self.straight(self.to_machine(op), line, feed=True)  # type: ignore[arg-type]
+        elif kind is ops.StraightTraverse:
+            self.straight(self.to_machine(op), line, feed=False)  # type: ignore[arg-type]
+        elif kind is ops.ArcFeed:
+            self.arc(op, line)  # type: ignore[arg-type]
+        elif kind is ops.SetFeedRate:
+            self.feed = op.rate  # type: ignore[attr-defined]
+        elif kind is ops.SetFeedMode:
+            self.per_rev = op.mode == 1  # type: ignore[attr-defined]
+        elif kind is ops.SetSpindleSpeed:
+            self.rpm = op.rpm  # type: ignore[attr-defined]
+            if self.spindle_on:
+                self.wait("spindle", self.machine.spindle_start_time, line)
+        elif kind is ops.SetMotionControlMode:
+            self.flush_chain()
+            self.mode = STOP if op.mode == "CANON_EXACT_STOP" else EXACT  # type: ignore[attr-defined]
+            self.tolerance = 0.0
+        elif kind is ops.SetMotionControlContinuous:
+            self.flush_chain()
+            self.mode = PARABOLIC
+            self.tolerance = op.tolerance * self.scale  # type: ignore[attr-defined]
+        elif kind is ops.SetNaivecamTolerance:
+            self.flush_chain()
+            self.naive_tol = op.tolerance * self.scale  # type: ignore[attr-defined]
+        elif kind is ops.UseLengthUnits:
+            inch = op.units == "CANON_UNITS_INCHES"  # type: ignore[attr-defined]
+            if inch == self.inch_machine:
+                self.scale = 1.0
+            else:
+                self.scale = MM_PER_INCH if inch else 1.0 / MM_PER_INCH
+        elif kind is ops.SelectPlane:
+            self.plane = PLANES.get(op.plane, self.plane)  # type: ignore[attr-defined]
+        elif kind is ops.SetG5xOffset:
+            self.g5x = [v * self.scale for v in list(op)[1:]] + [0.0] * 0
+            self.g5x = self._angular(self.g5x)
+        elif kind is ops.SetG92Offset:
+            self.g92 = self._angular([v * self.scale for v in op])
+        elif kind is ops.SetXYRotation:
+            self.rot = math.radians(op.degrees)  # type: ignore[attr-defined]
+            self.cos_r, self.sin_r = math.cos(self.rot), math.sin(self.rot)
+        elif kind is ops.UseToolLengthOffset:
+            self.tlo = self._angular([v * self.scale for v in list(op)[:6]])
+        elif kind is ops.SelectTool:
+            self.selected = op[0]  # type: ignore[index]
+        elif kind is ops.ChangeTool:
+            self.wait("tool change", self.machine.tool_change_time, line)
+            self.tool = self.selected
+        elif kind is ops.ChangeToolNumber:
+            self.tool = self.selected
+        elif kind is ops.Dwell:
+            self.wait("dwell", op.seconds, line)  # type: ignore[attr-defined]
+        elif kind in SPINDLE_START:
+            self.spindle_on = True
+            self.wait("spindle", self.machine.spindle_start_time, line)
+        elif kind is ops.StopSpindleTurning:
+            was = self.spindle_on
+            self.spindle_on = False
+            self.wait("spindle", self.machine.spindle_stop_time if was else 0.0, line)
+        elif kind in WAITS or kind is ops.StraightProbe or kind is ops.RigidTap:
+            self.wait("wait", 0.0, line)
+        elif kind is ops.ProgramEnd:
+            self.flush_chain()
+            self.planner.stop()
+
+    def emit_move(self, kind: type, fields: Sequence[Any], label: str, line: int) -> None:
+        self.emit(kind(*fields), label, line)
+
+    def print_text(self, text: str) -> None:
+        pass
+
+    def flush(self) -> None:
+        self.flush_chain()
+        self.planner.stop()
+
+    # -- positions ----------------------------------------------------------------------------
+    @staticmethod
+    def _angular(values: list[float]) -> list[float]:
+        return values  # A B C are in degrees in every unit system; scaled below
+
+    def to_machine(self, op: Sequence[float]) -> Pos:
+        s = self.scale
+        g5, g9, t = self.g5x, self.g92, self.tlo
+        x = op[0] * s + g9[0]
+        y = op[1] * s + g9[1]
+        if self.rot:
+            x, y = x * self.cos_r - y * self.sin_r, x * self.sin_r + y * self.cos_r
+        return (x + g5[0] + t[0], y + g5[1] + t[1], op[2] * s + g9[2] + g5[2] + t[2],
+                op[3] + g9[3] / s + g5[3] / s + t[3] / s,
+                op[4] + g9[4] / s + g5[4] / s + t[4] / s,
+                op[5] + g9[5] / s + g5[5] / s + t[5] / s)
+
+    # -- limits -------------------------------------------------------------------------------
+    def line_limits(self, delta: Sequence[float], length: float) -> tuple[float, float]:
+        """The speed and acceleration a straight move of ``delta`` (per axis) and ``length`` can
+        have: no axis may exceed its own limits."""
+        tv = ta = 0.0
+        for i, lim in enumerate(self.limits):
+            d = abs(delta[i])
+            if d > 1e-12 and lim is not None:
+                tv = max(tv, d / lim[0])
+                ta = max(ta, d / lim[1])
+        if tv <= 0.0:
+            return math.inf, math.inf
+        return length / tv, length / ta
+
+    def feed_speed(self, length_units: float = 0.0) -> float:
+        """The programmed feed in machine units per second."""
+        rate = self.feed * (self.rpm if self.per_rev else 1.0)
+        return rate * self.scale / 60.0
+
+    # -- moves --------------------------------------------------------------------------------
+    def straight(self, end: Pos, line: int, feed: bool) -> None:
+        if feed and self.mode == PARABOLIC and self.naive_tol > 0.0:
+            self.see_point(end, line)
+            return
+        self.flush_chain()
+        self.line_to(self.pos, end, line, feed)
+
+    def see_point(self, end: Pos, line: int) -> None:
+        """Naive-CAM merging: extend the chain of straight feeds to ``end`` if every point of it
+        stays within the tolerance of the straight line from its start to ``end``."""
+        f = self.feed_speed()
+        chain = self.chain
+        if chain and (f != self.chain_feed or end[3:] != chain[-1][0][3:]):
+            self.flush_chain()
+        if not chain:
+            self.chain_start = self.pos
+            self.chain_feed = f
+            chain.append((end, line, _dist(self.pos, end)))
+            self.pos = end
+            return
+        s = self.chain_start
+        tol = self.naive_tol
+        dx, dy, dz = end[0] - s[0], end[1] - s[1], end[2] - s[2]
+        ll = dx * dx + dy * dy + dz * dz
+        ok = ll > 0.0
+        if ok:
+            for p, _, _ in chain:
+                px, py, pz = p[0] - s[0], p[1] - s[1], p[2] - s[2]
+                t = (px * dx + py * dy + pz * dz) / ll
+                if t < 0.0 or t > 1.0:
+                    ok = False
+                    break
+                ex, ey, ez = px - t * dx, py - t * dy, pz - t * dz
+                if ex * ex + ey * ey + ez * ez > tol * tol:
+                    ok = False
+                    break
+        if not ok:
+            self.flush_chain()
+            self.chain_start = self.pos
+            self.chain_feed = f
+        chain.append((end, line, _dist(self.pos, end)))
+        self.pos = end
+
+    def flush_chain(self) -> None:
+        chain = self.chain
+        if not chain:
+            return
+        end, line, _ = chain[-1]
+        self.line_to(self.chain_start, end, line, True, parts=list(chain))
+        chain.clear()
+
+    def line_to(self, start: Pos, end: Pos, line: int, feed: bool,
+                parts: list[tuple[Pos, int, float]] | None = None) -> None:
+        delta = [end[i] - start[i] for i in range(6)]
+        length = math.sqrt(delta[0] ** 2 + delta[1] ** 2 + delta[2] ** 2)
+        if length < 1e-9:
+            length = math.sqrt(delta[3] ** 2 + delta[4] ** 2 + delta[5] ** 2)
+        self.pos = end
+        if length < 1e-9:
+            return
+        vmax, amax = self.line_limits(delta, length)
+        if self.vcap is not None:
+            vmax = min(vmax, self.vcap)
+        if feed:
+            f = self.chain_feed if parts else self.feed_speed()
+            speed = min(f, vmax)
+        else:
+            speed = vmax
+        naive = length / speed if speed > 0 else math.inf
+        if speed <= 0.0:
+            speed = 1e-9
+        seg = Segment(FEED if feed else RAPID, line, self.tool, Line(start, end, length), speed,
+                      amax, amax, self.mode, self.tolerance, naive)
+        seg.parts = parts
+        self.planner.add(seg)
+
+    def arc(self, op: ops.ArcFeed, line: int) -> None:
+        p1, p2, pn = self.plane
+        # the end and the centre in program coordinates, then in machine coordinates
+        prog = [0.0] * 6
+        prog[p1], prog[p2], prog[pn] = op.first_end, op.second_end, op.axis_end_point
+        prog[3], prog[4], prog[5] = op.a, op.b, op.c
+        centre = [0.0] * 6
+        centre[p1], centre[p2], centre[pn] = op.first_axis, op.second_axis, op.axis_end_point
+        end = self.to_machine(prog)
+        c = self.to_machine(centre)
+        normal = [0.0, 0.0, 0.0]
+        normal[pn] = 1.0
+        start = self.pos
+        shape = arc_from_canon(start, end, (c[0], c[1], c[2]),
+                               (normal[0], normal[1], normal[2]), op.rotation)
+        if (self.mode == PARABOLIC and self.naive_tol > 0.0 and self.plane == (0, 1, 2)
+                and abs(shape.rise) < 1e-12 and shape.sweep < math.pi
+                and shape.radius * (1.0 - math.cos(0.5 * shape.sweep)) < self.naive_tol):
+            mid = shape.point(0.5 * shape.length)
+            self.see_point(mid, line)
+            self.see_point(end, line)
+            return
+        self.flush_chain()
+        self.pos = end
+        if shape.length < 1e-9:
+            return
+        circ = shape.radius * shape.sweep
+        rise = abs(shape.rise)
+        length = shape.length
+        tv = ta = 0.0
+        ap = math.inf
+        for i in (p1, p2):
+            lim = self.limits[i]
+            if lim is not None and circ > 1e-12:
+                tv = max(tv, circ / lim[0])
+                ta = max(ta, circ / lim[1])
+                ap = min(ap, lim[1])
+        lim = self.limits[pn]
+        if lim is not None and rise > 1e-12:
+            tv = max(tv, rise / lim[0])
+            ta = max(ta, rise / lim[1])
+        vmax = length / tv if tv > 0 else math.inf
+        amax = length / ta if ta > 0 else math.inf
+        if self.vcap is not None:
+            vmax = min(vmax, self.vcap)
+        if ap < math.inf and shape.radius > 0:
+            vmax = min(vmax, math.sqrt(0.5 * math.sqrt(3.0) * ap * shape.radius))
+        speed = min(self.feed_speed(), vmax)
+        naive = length / min(self.feed_speed(), vmax) if speed > 0 else math.inf
+        seg = Segment(ARC, line, self.tool, shape, speed, 0.5 * amax, amax, self.mode,
+                      self.tolerance, naive)
+        self.planner.add(seg)
+
+    # -- standstills --------------------------------------------------------------------------
+    def wait(self, kind: str, seconds: float, line: int) -> None:
+        self.flush_chain()
+        self.planner.stop()
+        self.on_wait(kind, seconds, line)
+
+
+def _dist(p: Pos, q: Pos) -> float:
+    return math.sqrt((q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2 + (q[2] - p[2]) ** 2)
