@@ -181,3 +181,59 @@ def blend_arc(theta: float, goal: float, room: float, tolerance: float,
         return None
     speed = min(goal, math.sqrt(normal * r))
     return Blend(r, r * tan_half, r * theta, speed)
+
+
+class Piece(NamedTuple):
+    """The part of a ``base`` shape from path length ``s0`` on, ``length`` long (an arc with its
+    ends given to corner blends)."""
+
+    base: Line | Arc
+    s0: float
+    length: float
+
+    def point(self, s: float) -> Pos:
+        return self.base.point(self.s0 + s)
+
+    def start_direction(self) -> Vec:
+        return _direction_at(self.base, self.s0)
+
+    def end_direction(self) -> Vec:
+        return _direction_at(self.base, self.s0 + self.length)
+
+    @property
+    def start(self) -> Pos:
+        return self.point(0.0)
+
+    @property
+    def end(self) -> Pos:
+        return self.point(self.length)
+
+
+def _direction_at(shape: Line | Arc, s: float) -> Vec:
+    if isinstance(shape, Line):
+        return shape.start_direction()
+    return shape.direction(shape.sweep * s / shape.length if shape.length > 0.0 else 0.0)
+
+
+class Corner(NamedTuple):
+    """A blend that is drawn as the quadratic Bézier from ``p0`` through the control point
+    ``corner`` to ``p1`` (where an arc meets a line or another arc), timed as ``length`` long."""
+
+    p0: Pos
+    corner: Pos
+    p1: Pos
+    length: float
+    u0: Vec
+    u1: Vec
+
+    def point(self, s: float) -> Pos:
+        t = s / self.length if self.length > 0.0 else 1.0
+        a, b, c = (1.0 - t) * (1.0 - t), 2.0 * t * (1.0 - t), t * t
+        p, q, r = self.p0, self.corner, self.p1
+        return tuple(a * p[i] + b * q[i] + c * r[i] for i in range(6))  # type: ignore[return-value]
+
+    def start_direction(self) -> Vec:
+        return self.u0
+
+    def end_direction(self) -> Vec:
+        return self.u1

@@ -16,7 +16,7 @@ import math
 from collections import deque
 from collections.abc import Callable
 
-from .geometry import Arc, Line, Pos, Vec, angle_between, blend_arc, cross, unit
+from .geometry import Arc, Corner, Line, Piece, Pos, Vec, angle_between, blend_arc, cross, unit
 from .machine import Machine
 
 # How a move ends (LinuxCNC's "termination conditions").
@@ -27,7 +27,7 @@ PARABOLIC = 3  # blend mode (G64) with no arc: half acceleration, ramps overlap 
 
 RAPID, FEED, ARC, BLEND = "rapid", "feed", "arc", "blend"
 
-Shape = Line | Arc
+Shape = Line | Arc | Piece | Corner
 
 SQRT3_2 = math.sqrt(3.0) / 2.0
 
@@ -148,6 +148,7 @@ class Planner:
         self.clock = 0.0  # time at which the current group of joined moves started
         self.group = 0.0  # time of the moves run since the last stop
         self.vnow = 0.0  # speed at the end of the last move run
+        self.overlap = 0.0  # how long the next move runs alongside the last one
         self.started = False
         self.first_motion: float | None = None
 
@@ -165,7 +166,7 @@ class Planner:
     def _join(self, prev: Segment, seg: Segment) -> None:
         """Decide how ``prev`` ends, now that ``seg`` follows it."""
         mode = prev.mode
-        if mode == STOP or prev.length <= 0.0:
+        if mode == STOP or prev.length <= 0.0 or (prev.kind == RAPID) != (seg.kind == RAPID):
             prev.term = STOP
             return
         u1, u2 = prev.end_dir, seg.start_dir
@@ -197,8 +198,7 @@ class Planner:
             seg.reduce = min(seg.reduce, factor)
             return
         # blend mode
-        if (self.machine.arc_blend_enable and prev.is_line and seg.is_line
-                and prev.kind != BLEND):
+        if self.machine.arc_blend_enable and prev.kind != BLEND and both_lines(prev, seg):
             blend = self._blend(prev, seg, theta)
             if blend is not None:
                 return
@@ -216,23 +216,27 @@ class Planner:
         b = blend_arc(theta, goal, room, prev.tolerance, 0.5 * amax, SQRT3_2 * amax)
         if b is None or b.trim <= 0.0:
             return None
-        pl, sl = prev.shape, seg.shape
-        assert isinstance(pl, Line) and isinstance(sl, Line)
-        corner = pl.end
         d = b.trim
-        # trim both lines
-        p_end = pl.point(pl.length - d)
-        s_start = sl.point(d)
-        prev.shape = Line(pl.start, p_end, pl.length - d)
+        pl, sl = prev.shape, seg.shape
+        if isinstance(pl, Line) and isinstance(sl, Line):
+            corner = pl.end
+            p_end = pl.point(pl.length - d)
+            prev.shape = Line(pl.start, p_end, pl.length - d)
+            seg.shape = Line(sl.point(d), sl.end, sl.length - d)
+            center = (p_end[0] + w[0] * b.radius, p_end[1] + w[1] * b.radius,
+                      p_end[2] + w[2] * b.radius)
+            e1 = (-w[0], -w[1], -w[2])
+            abc = corner[3:]
+            arc: Shape = Arc(center, e1, u1, cross(e1, u1), b.radius, theta, 0.0, abc, abc,
+                             b.length)
+        else:
+            corner = pl.point(pl.length)
+            prev.shape = _trimmed(pl, 0.0, pl.length - d)
+            seg.shape = _trimmed(sl, d, sl.length - d)
+            arc = Corner(prev.shape.point(prev.shape.length), corner, seg.shape.point(0.0),
+                         b.length, u1, u2)
         prev.length = prev.shape.length
-        seg.shape = Line(s_start, sl.end, sl.length - d)
         seg.length = seg.shape.length
-        center = (p_end[0] + w[0] * b.radius, p_end[1] + w[1] * b.radius,
-                  p_end[2] + w[2] * b.radius)
-        e1 = (-w[0], -w[1], -w[2])
-        normal = cross(e1, u1)
-        abc = corner[3:]
-        arc = Arc(center, e1, u1, normal, b.radius, theta, 0.0, abc, abc, b.length)
         vmax = min(b.speed, self._short_cap(b.length))
         blend = Segment(BLEND, prev.line, prev.tool, arc, vmax, 0.5 * amax, amax, prev.mode,
                         prev.tolerance, 0.0)
@@ -298,10 +302,16 @@ class Planner:
         seg.vout = vout
         seg.peak = peak
         seg.time = t
-        seg.t0 = self.clock + self.group
-        self.group += t
+        overlap = self.overlap
+        seg.t0 = self.clock + self.group - overlap
+        self.group += t - overlap
+        self.overlap = 0.0
         self.vnow = vout
-        if seg.term != TANGENT or vout <= 0.0:
+        nxt = self.queue[0] if self.queue else None
+        if seg.term == PARABOLIC and nxt is not None:
+            # The next move starts while this one slows down: the ramps overlap.
+            self.overlap = min(parabolic_overlap(seg, a, peak, nxt), t)
+        elif seg.term != TANGENT or vout <= 0.0:
             self._settle()
         self.done(seg)
 
@@ -331,3 +341,32 @@ class Planner:
     @property
     def total(self) -> float:
         return self.clock + self.group
+
+
+def parabolic_overlap(seg: Segment, a1: float, peak: float, nxt: Segment) -> float:
+    """How long ``nxt`` runs while ``seg`` finishes its parabolic end: the blend lasts as long as
+    the slower of the two ramps, but no longer than it takes to run the shorter move."""
+    a2 = nxt.effective_accel()
+    if a1 <= 0.0 or a2 <= 0.0 or seg.length <= 0.0 or nxt.length <= 0.0:
+        return 0.0
+    v1 = min(peak, math.sqrt(a1 * seg.length))
+    v2 = min(nxt.vmax, math.sqrt(a2 * nxt.length))
+    if v1 <= 0.0 or v2 <= 0.0:
+        return 0.0
+    t_blend = min(max(v1 / a1, v2 / a2), seg.length / v1, nxt.length / v2)
+    return min(v1, t_blend * a1) / a1
+
+
+def both_lines(prev: Segment, seg: Segment) -> bool:
+    return isinstance(prev.shape, Line) and isinstance(seg.shape, Line)
+
+
+def _trimmed(shape: Shape, s0: float, length: float) -> Shape:
+    """``shape`` from path length ``s0`` on, ``length`` long."""
+    if isinstance(shape, Line):
+        return Line(shape.point(s0), shape.point(s0 + length), length)
+    if isinstance(shape, Piece):
+        return Piece(shape.base, shape.s0 + s0, length)
+    if isinstance(shape, Arc):
+        return Piece(shape, s0, length)
+    return shape
