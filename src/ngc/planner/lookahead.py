@@ -197,11 +197,16 @@ class Planner:
             prev.reduce = min(prev.reduce, factor)
             seg.reduce = min(seg.reduce, factor)
             return
-        # blend mode
+        # blend mode: a turn back stops; a corner between lines is rounded by an arc; other
+        # corners (with an arc) keep a parabolic blend
+        if theta > math.pi - 1e-3:
+            prev.term = STOP
+            return
         if self.machine.arc_blend_enable and prev.kind != BLEND and both_lines(prev, seg):
-            blend = self._blend(prev, seg, theta)
-            if blend is not None:
+            if self._blend(prev, seg, theta) is not None:
                 return
+            prev.term = STOP
+            return
         prev.term = PARABOLIC
 
     def _blend(self, prev: Segment, seg: Segment, theta: float) -> Segment | None:
