@@ -191,17 +191,17 @@ class Planner:
             prev.reduce = min(prev.reduce, used)
             seg.reduce = min(seg.reduce, used)
             return
+        if theta > math.pi - 1e-3:  # a turn back stops, whatever the mode
+            prev.term = STOP
+            return
         if mode == EXACT:
             prev.term = EXACT
             factor = 1.0 - max(self.kink_ratio, 0.001)
             prev.reduce = min(prev.reduce, factor)
             seg.reduce = min(seg.reduce, factor)
             return
-        # blend mode: a turn back stops; a corner between lines is rounded by an arc; other
-        # corners (with an arc) keep a parabolic blend
-        if theta > math.pi - 1e-3:
-            prev.term = STOP
-            return
+        # blend mode: a corner between lines is rounded by an arc; other corners (with an arc)
+        # keep a parabolic blend
         if self.machine.arc_blend_enable and prev.kind != BLEND and both_lines(prev, seg):
             if self._blend(prev, seg, theta) is not None:
                 return
