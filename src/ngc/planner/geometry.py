@@ -237,3 +237,36 @@ class Corner(NamedTuple):
 
     def end_direction(self) -> Vec:
         return self.u1
+
+
+class BlendArc(NamedTuple):
+    """The arc that rounds the corner ``corner`` between a line arriving along ``u1`` and one
+    leaving along ``u2``: it leaves the first line ``trim`` before the corner and turns by
+    ``theta`` with ``radius``.  Its points are worked out only when asked for."""
+
+    corner: Pos
+    u1: Vec
+    u2: Vec
+    radius: float
+    trim: float
+    theta: float
+    length: float
+
+    def arc(self) -> Arc:
+        u1, u2, c, d, r = self.u1, self.u2, self.corner, self.trim, self.radius
+        cos_t = dot(u1, u2)
+        w = unit((u2[0] - cos_t * u1[0], u2[1] - cos_t * u1[1], u2[2] - cos_t * u1[2]))
+        center = (c[0] - u1[0] * d + w[0] * r, c[1] - u1[1] * d + w[1] * r,
+                  c[2] - u1[2] * d + w[2] * r)
+        e1 = (-w[0], -w[1], -w[2])
+        abc = (c[3], c[4], c[5])
+        return Arc(center, e1, u1, cross(e1, u1), r, self.theta, 0.0, abc, abc, self.length)
+
+    def point(self, s: float) -> Pos:
+        return self.arc().point(s)
+
+    def start_direction(self) -> Vec:
+        return self.u1
+
+    def end_direction(self) -> Vec:
+        return self.u2

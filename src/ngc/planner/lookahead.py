@@ -16,7 +16,7 @@ import math
 from collections import deque
 from collections.abc import Callable
 
-from .geometry import Arc, Corner, Line, Piece, Pos, Vec, angle_between, blend_arc, cross, unit
+from .geometry import Arc, BlendArc, Corner, Line, Piece, Pos, Vec, angle_between, blend_arc, unit
 from .machine import Machine
 
 # How a move ends (LinuxCNC's "termination conditions").
@@ -27,7 +27,7 @@ PARABOLIC = 3  # blend mode (G64) with no arc: half acceleration, ramps overlap 
 
 RAPID, FEED, ARC, BLEND = "rapid", "feed", "arc", "blend"
 
-Shape = Line | Arc | Piece | Corner
+Shape = Line | Arc | Piece | Corner | BlendArc
 
 SQRT3_2 = math.sqrt(3.0) / 2.0
 
@@ -65,7 +65,8 @@ class Segment:
     )
 
     def __init__(self, kind: str, line: int, tool: int, shape: Shape, vmax: float, accel: float,
-                 plane_accel: float, mode: int, tolerance: float, naive: float) -> None:
+                 plane_accel: float, mode: int, tolerance: float, naive: float,
+                 dirs: tuple[Vec, Vec] | None = None) -> None:
         self.kind = kind
         self.line = line
         self.tool = tool
@@ -82,8 +83,10 @@ class Segment:
         self.vfinal = 0.0  # speed planned at the end (backward pass)
         self.reduce = 1.0  # acceleration factor left after a kink or an exact-path corner
         self.is_line = isinstance(shape, Line)
-        self.start_dir: Vec = shape.start_direction()
-        self.end_dir: Vec = shape.end_direction()
+        if dirs is None:
+            dirs = (shape.start_direction(), shape.end_direction())
+        self.start_dir: Vec = dirs[0]
+        self.end_dir: Vec = dirs[1]
         self.naive = naive
         self.time = 0.0
         self.vin = 0.0
@@ -225,15 +228,14 @@ class Planner:
         pl, sl = prev.shape, seg.shape
         if isinstance(pl, Line) and isinstance(sl, Line):
             corner = pl.end
-            p_end = pl.point(pl.length - d)
+            c0, c1, c2 = corner[0], corner[1], corner[2]
+            p_end = (c0 - u1[0] * d, c1 - u1[1] * d, c2 - u1[2] * d, corner[3], corner[4],
+                     corner[5])
             prev.shape = Line(pl.start, p_end, pl.length - d)
-            seg.shape = Line(sl.point(d), sl.end, sl.length - d)
-            center = (p_end[0] + w[0] * b.radius, p_end[1] + w[1] * b.radius,
-                      p_end[2] + w[2] * b.radius)
-            e1 = (-w[0], -w[1], -w[2])
-            abc = corner[3:]
-            arc: Shape = Arc(center, e1, u1, cross(e1, u1), b.radius, theta, 0.0, abc, abc,
-                             b.length)
+            s_start = (c0 + u2[0] * d, c1 + u2[1] * d, c2 + u2[2] * d, corner[3], corner[4],
+                       corner[5])
+            seg.shape = Line(s_start, sl.end, sl.length - d)
+            arc: Shape = BlendArc(corner, u1, u2, b.radius, d, theta, b.length)
         else:
             corner = pl.point(pl.length)
             prev.shape = _trimmed(pl, 0.0, pl.length - d)
@@ -244,7 +246,7 @@ class Planner:
         seg.length = seg.shape.length
         vmax = min(b.speed, self._short_cap(b.length))
         blend = Segment(BLEND, prev.line, prev.tool, arc, vmax, 0.5 * amax, amax, prev.mode,
-                        prev.tolerance, 0.0)
+                        prev.tolerance, 0.0, (u1, u2))
         prev.term = TANGENT
         prev.vend = vmax
         blend.term = TANGENT

@@ -146,7 +146,12 @@ class PathSink:
             self.planner.stop()
 
     def emit_move(self, kind: type, fields: Sequence[Any], label: str, line: int) -> None:
-        self.emit(kind(*fields), label, line)
+        if kind is ops.StraightFeed:
+            self.straight(self.to_machine(fields), line, True)
+        elif kind is ops.StraightTraverse:
+            self.straight(self.to_machine(fields), line, False)
+        else:
+            self.emit(kind(*fields), label, line)
 
     def print_text(self, text: str) -> None:
         pass
@@ -204,36 +209,40 @@ class PathSink:
         stays within the tolerance of the straight line from its start to ``end``."""
         f = self.feed_speed()
         chain = self.chain
-        if chain and (f != self.chain_feed or end[3:] != chain[-1][0][3:]):
+        pos = self.pos
+        step = math.sqrt((end[0] - pos[0]) ** 2 + (end[1] - pos[1]) ** 2 + (end[2] - pos[2]) ** 2)
+        if chain:
+            last = chain[-1][0]
+            if (f == self.chain_feed and end[3] == last[3] and end[4] == last[4]
+                    and end[5] == last[5] and self._within(end)):
+                chain.append((end, line, step))
+                self.pos = end
+                return
             self.flush_chain()
-        if not chain:
-            self.chain_start = self.pos
-            self.chain_feed = f
-            chain.append((end, line, _dist(self.pos, end)))
-            self.pos = end
-            return
-        s = self.chain_start
-        tol = self.naive_tol
-        dx, dy, dz = end[0] - s[0], end[1] - s[1], end[2] - s[2]
-        ll = dx * dx + dy * dy + dz * dz
-        ok = ll > 0.0
-        if ok:
-            for p, _, _ in chain:
-                px, py, pz = p[0] - s[0], p[1] - s[1], p[2] - s[2]
-                t = (px * dx + py * dy + pz * dz) / ll
-                if t < 0.0 or t > 1.0:
-                    ok = False
-                    break
-                ex, ey, ez = px - t * dx, py - t * dy, pz - t * dz
-                if ex * ex + ey * ey + ez * ez > tol * tol:
-                    ok = False
-                    break
-        if not ok:
-            self.flush_chain()
-            self.chain_start = self.pos
-            self.chain_feed = f
-        chain.append((end, line, _dist(self.pos, end)))
         self.pos = end
+        self.chain_start = pos
+        self.chain_feed = f
+        chain.append((end, line, step))
+
+    def _within(self, end: Pos) -> bool:
+        """Whether every point of the chain is within the tolerance of the line from the chain's
+        start to ``end``."""
+        s = self.chain_start
+        sx, sy, sz = s[0], s[1], s[2]
+        dx, dy, dz = end[0] - sx, end[1] - sy, end[2] - sz
+        ll = dx * dx + dy * dy + dz * dz
+        if ll <= 0.0:
+            return False
+        tol2 = self.naive_tol * self.naive_tol
+        for p, _, _ in self.chain:
+            px, py, pz = p[0] - sx, p[1] - sy, p[2] - sz
+            t = (px * dx + py * dy + pz * dz) / ll
+            if t < 0.0 or t > 1.0:
+                return False
+            ex, ey, ez = px - t * dx, py - t * dy, pz - t * dz
+            if ex * ex + ey * ey + ez * ez > tol2:
+                return False
+        return True
 
     def flush_chain(self) -> None:
         chain = self.chain
@@ -245,8 +254,9 @@ class PathSink:
 
     def line_to(self, start: Pos, end: Pos, line: int, feed: bool,
                 parts: list[tuple[Pos, int, float]] | None = None) -> None:
-        delta = [end[i] - start[i] for i in range(6)]
-        length = math.sqrt(delta[0] ** 2 + delta[1] ** 2 + delta[2] ** 2)
+        delta = (end[0] - start[0], end[1] - start[1], end[2] - start[2], end[3] - start[3],
+                 end[4] - start[4], end[5] - start[5])
+        length = math.sqrt(delta[0] * delta[0] + delta[1] * delta[1] + delta[2] * delta[2])
         if length < 1e-9:
             length = math.sqrt(delta[3] ** 2 + delta[4] ** 2 + delta[5] ** 2)
         self.pos = end
@@ -263,8 +273,9 @@ class PathSink:
         naive = length / speed if speed > 0 else math.inf
         if speed <= 0.0:
             speed = 1e-9
+        u = (delta[0] / length, delta[1] / length, delta[2] / length)
         seg = Segment(FEED if feed else RAPID, line, self.tool, Line(start, end, length), speed,
-                      amax, amax, self.mode, self.tolerance, naive)
+                      amax, amax, self.mode, self.tolerance, naive, (u, u))
         seg.parts = parts
         self.planner.add(seg)
 
