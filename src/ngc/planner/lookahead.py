@@ -361,7 +361,14 @@ def parabolic_overlap(seg: Segment, a1: float, peak: float, nxt: Segment) -> flo
     if v1 <= 0.0 or v2 <= 0.0:
         return 0.0
     t_blend = min(max(v1 / a1, v2 / a2), seg.length / v1, nxt.length / v2)
-    return min(v1, t_blend * a1) / a1
+    vb = min(v1, t_blend * a1)
+    if seg.tolerance > 0.0:
+        # the two ramps together cut the corner by about vb² / (4 a) · sin(θ / 2): keep that
+        # within the tolerance
+        half = 0.5 * angle_between(seg.end_dir, nxt.start_dir)
+        if half > 1e-9:
+            vb = min(vb, math.sqrt(4.0 * min(a1, a2) * seg.tolerance / math.sin(half)))
+    return vb / a1
 
 
 def both_lines(prev: Segment, seg: Segment) -> bool:
