@@ -205,11 +205,13 @@ class Planner:
             return
         # blend mode: a corner between lines is rounded by an arc; other corners (with an arc)
         # keep a parabolic blend
-        if self.machine.arc_blend_enable and prev.kind != BLEND and both_lines(prev, seg):
-            if self._blend(prev, seg, theta) is not None:
+        if self.machine.arc_blend_enable and prev.kind != BLEND:
+            lines = both_lines(prev, seg)
+            if (lines or prev.tolerance > 0.0) and self._blend(prev, seg, theta) is not None:
                 return
-            prev.term = STOP
-            return
+            if lines:
+                prev.term = STOP
+                return
         prev.term = PARABOLIC
 
     def _blend(self, prev: Segment, seg: Segment, theta: float) -> Segment | None:
