@@ -21,6 +21,7 @@ from __future__ import annotations
 import argparse
 import gc
 import io
+import math
 import os
 import sys
 from collections.abc import Callable
@@ -48,6 +49,9 @@ EXIT_BROKEN_PIPE = 141  # 128 + SIGPIPE, what a C filter killed by SIGPIPE repor
 
 if TYPE_CHECKING:
     from .engine import Setup as EngineSetup
+    from .planner.machine import Machine as PlannerMachine
+    from .planner.timing import TimeResult
+    from .time_report import TrajectoryFile
 
 SINKS: dict[str, Callable[[TextIO], Sink]] = {"text": TextSink, "json": JsonSink}
 STDIN_NAME = "<stdin>"  # how a program read from standard input (``-``) is named
@@ -163,7 +167,36 @@ def build_parser() -> argparse.ArgumentParser:
         help="text: a paragraph per file (default); json: one JSON object per file and line",
     )
     check.set_defaults(run=run_check)
+    _add_time(sub, [_machine_options()])
     return parser
+
+
+def _add_time(sub: argparse._SubParsersAction[argparse.ArgumentParser],
+              parents: list[argparse.ArgumentParser]) -> None:
+    time = sub.add_parser(
+        "time", parents=parents, help="estimate a program's cycle time on a machine",
+        description="Plan a LinuxCNC program's motion on a machine (axis limits, blending, servo "
+        "period, tool change and spindle times) and print how long it takes: in total, beside "
+        "the naive distance / feed figure, by kind, by tool and by line. The machine is the "
+        "default machine, or -i INI's, with --machine's TOML file over it (docs/machine.md).",
+        epilog=PROGRAM_HELP,
+    )
+    time.add_argument("file", metavar="FILE", help="the program (- for standard input)")
+    time.add_argument("--dialect", choices=dialects.DIALECTS, default=None,
+                      help="the program's dialect; ngc time runs LinuxCNC programs only, and "
+                      "refuses one in the engine dialect (given here, or by its first line)")
+    time.add_argument("--machine", metavar="TOML", dest="machine_file",
+                      help="ngc's TOML machine file, over the default machine or -i INI's")
+    time.add_argument("--format", choices=("json", "text"), default="text",
+                      help="text: a paragraph (default); json: one JSON object")
+    time.add_argument("--trajectory", metavar="OUT.csv",
+                      help="write the sampled trajectory as CSV: t, x, y, z (a, b, c for the "
+                      "machine's rotary axes), velocity, line")
+    time.add_argument("--every", metavar="SECONDS", type=_seconds,
+                      help="the trajectory's sample spacing (default: the servo period)")
+    time.add_argument("--top", metavar="N", type=_count, default=10,
+                      help="how many of the slowest lines to list (default 10)")
+    time.set_defaults(run=run_time)
 
 
 PROGRAM_HELP = (
@@ -218,6 +251,22 @@ def _positive(text: str) -> int:
     if number is None:
         raise argparse.ArgumentTypeError(f"needs a positive number, not {text!r}")
     return number
+
+
+def _seconds(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (value > 0.0 and math.isfinite(value)):
+        raise argparse.ArgumentTypeError(f"needs a positive number of seconds, not {text!r}")
+    return value
+
+
+def _count(text: str) -> int:
+    if not (text.isascii() and text.isdigit()):
+        raise argparse.ArgumentTypeError(f"needs a whole number, 0 or more, not {text!r}")
+    return int(text)
 
 
 def _setup(command: str, options: argparse.Namespace) -> tuple[MachineOptions, Setup]:
@@ -457,3 +506,95 @@ def _unreadable(name: str, exc: OSError) -> dict[str, object]:
     error = {"message": f"cannot open: {exc.strerror}", "file": name, "line": None,
              "column": None, "source": None}
     return {"file": name, "ok": False, "lines": None, "error": error, "summary": None}
+
+
+NOT_LINUXCNC = "ngc time runs LinuxCNC programs; {name} is in the engine dialect"
+
+
+def run_time(options: argparse.Namespace) -> int:
+    """``ngc time FILE``: the program's cycle time on the machine, as a paragraph or a JSON
+    object on stdout, and with ``--trajectory`` the sampled motion in a CSV file.  Exit 2 for a
+    bad machine input, a file that cannot be read or written, or an engine-dialect program; 1
+    for a program error (nothing is printed on stdout then)."""
+    if options.every is not None and options.trajectory is None:
+        sys.stderr.write("ngc time: --every needs --trajectory\n")
+        return EXIT_USAGE
+    program = _open_marked(options.file, options.dialect)
+    try:
+        if program.dialect == ENGINE:
+            sys.stderr.write(f"ngc time: {NOT_LINUXCNC.format(name=program.name)}\n")
+            return EXIT_USAGE
+        return _time_linuxcnc(options, program)
+    finally:
+        program.close()
+
+
+def _time_linuxcnc(options: argparse.Namespace, program: Program) -> int:
+    from . import time_report  # loaded on use, as the planner is
+    from .planner.config import load_machine
+
+    try:
+        inputs, setup = _setup("time", options)
+        machine = load_machine(setup.ini, options.machine_file)
+    except NgcConfigError as exc:
+        sys.stderr.write(f"ngc time: {exc.message}\n")
+        return EXIT_USAGE
+    if program.handle is None:
+        return _cannot_open("time", program)
+    try:
+        csv = None if options.trajectory is None else time_report.TrajectoryFile(options.trajectory)
+    except OSError as exc:
+        sys.stderr.write(f"ngc time: cannot write {_name(options.trajectory)}: {exc.strerror}\n")
+        return EXIT_USAGE
+    try:
+        result = _time_program(options, program, machine,
+                               lambda sink: new_interpreter(sink, inputs, setup, write_files=False),
+                               csv)
+    except NgcError as exc:
+        sys.stderr.write(exc.render() + "\n")
+        return EXIT_PROGRAM_ERROR
+    except time_report.TrajectoryWriteError as exc:
+        sys.stderr.write(f"ngc time: {exc}\n")
+        return EXIT_USAGE
+    finally:
+        if csv is not None:
+            csv.discard()  # after commit: nothing left to do
+    _print_time(options, program.name, result, machine)
+    return EXIT_OK
+
+
+def _time_program(options: argparse.Namespace, program: Program, machine: PlannerMachine,
+                  interpreter: Callable[[Sink], Interpreter],
+                  csv: TrajectoryFile | None) -> TimeResult:
+    """Run the program through the planner, with the progress line; the trajectory, if asked
+    for, is written to ``csv`` and committed.  Raises :class:`NgcError` on a program error."""
+    from .planner.timing import time_lines
+    from .planner.trajectory import TrajectoryWriter
+
+    every = machine.servo_period if options.every is None else options.every
+    writer = None if csv is None else TrajectoryWriter(csv, machine, every)
+    assert program.handle is not None
+    handle = text_reader(program.handle)
+    with handle, _progress(program.name, handle, output_to_terminal=False) as progress:
+        result = time_lines(progress.lines(handle), machine, interpreter, file=program.name,
+                            reader=handle, on_segment=None if writer is None else writer.segment,
+                            on_wait=None if writer is None else writer.wait)
+    if writer is not None and csv is not None:
+        writer.finish(result.total_s)
+        csv.commit()
+    return result
+
+
+def _print_time(options: argparse.Namespace, name: str, result: TimeResult,
+                machine: PlannerMachine) -> None:
+    """``ngc time``'s report on stdout, with the text of the slowest lines if it is at hand."""
+    from . import time_report
+
+    rows = time_report.slowest(result, options.top)
+    sources = time_report.source_lines(options.file, (line for line, _ in rows))
+    if options.format == "json":
+        record = time_report.record(name, result, machine, options.top, sources)
+        sys.stdout.write(dumps(record) + "\n")
+    else:
+        report = time_report.render(name, result, machine, options.top, sources)
+        sys.stdout.write(report + "\n")

@@ -1,18 +1,34 @@
 """Timing a whole program: the interpreter's canon feeds the planner; the result sums the time by
-line, by tool and by kind, beside the naive distance / feed figure."""
+line, by tool and by kind, beside the naive distance / feed figure.
+
+:func:`time_text` times a program given as text, :func:`time_lines` one given as lines (with the
+interpreter a command line configures), :func:`time_file` a file.  A :class:`Timer` can also
+hand each finished segment and each standstill to a listener (``on_segment``, ``on_wait``): the
+trajectory writer of ``ngc time --trajectory`` (:mod:`ngc.planner.trajectory`) is one.
+"""
 
 from __future__ import annotations
 
 import math
+import sys
 from collections import defaultdict
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from typing import BinaryIO
 
+from ..canon.ops import Sink
 from ..interp.interpreter import Interpreter
+from ..interp.source import ProgramReader, text_reader
+from ..options import MachineOptions, load_setup, new_interpreter
 from .lookahead import BLEND, Planner, Segment
 from .machine import DEFAULT_MACHINE, Machine
 from .moves import PathSink
 
 KINDS = ("rapid", "feed", "arc", "dwell", "tool change", "spindle", "wait")
+
+SegmentListener = Callable[[Segment], None]
+# A standstill: its kind, its start and its duration (s, on the planner's clock), its line.
+WaitListener = Callable[[str, float, float, int], None]
 
 
 @dataclass
@@ -28,10 +44,14 @@ class TimeResult:
 
 
 class Timer:
-    """Collects finished segments and standstills into a :class:`TimeResult`."""
+    """Collects finished segments and standstills into a :class:`TimeResult`, and hands each to
+    ``on_segment`` and ``on_wait`` (if given) once it is counted."""
 
-    def __init__(self, machine: Machine) -> None:
+    def __init__(self, machine: Machine, on_segment: SegmentListener | None = None,
+                 on_wait: WaitListener | None = None) -> None:
         self.machine = machine
+        self.on_segment = on_segment
+        self.on_wait = on_wait
         self.result = TimeResult()
         self.planner = Planner(machine, self.segment)
         self.sink = PathSink(machine, self.planner, self.wait)
@@ -58,6 +78,8 @@ class Timer:
             r.naive_s += seg.naive
         r.segments += 1
         r.length += seg.length
+        if self.on_segment is not None:
+            self.on_segment(seg)
 
     def wait(self, kind: str, seconds: float, line: int) -> None:
         overhead = 0.0
@@ -66,12 +88,15 @@ class Timer:
         t = seconds + overhead
         if t <= 0.0:
             return
+        start = self.planner.total
         self.planner.clock += t
         r = self.result
         r.by_kind[kind] += t
         r.by_line[line] += t
         r.by_tool[self.sink.tool] += t
         r.naive_s += seconds
+        if self.on_wait is not None:
+            self.on_wait(kind, start, t, line)
 
     def finish(self) -> TimeResult:
         self.sink.flush()
@@ -80,8 +105,50 @@ class Timer:
 
 
 def time_text(text: str, machine: Machine = DEFAULT_MACHINE) -> TimeResult:
-    timer = Timer(machine)
-    interp = Interpreter(timer.sink)
+    """Time the program ``text`` on ``machine``; raises :class:`NgcError` on a program error.
+
+    >>> round(time_text("G61.1 G1 X100 F6000\\nM2\\n").total_s, 6)
+    1.1
+    """
+    return time_lines(text.splitlines(keepends=True), machine)
+
+
+def time_lines(lines: Iterable[str], machine: Machine = DEFAULT_MACHINE,
+               interpreter: Callable[[Sink], Interpreter] = Interpreter, *,
+               file: str | None = None, reader: ProgramReader | None = None,
+               on_segment: SegmentListener | None = None,
+               on_wait: WaitListener | None = None) -> TimeResult:
+    """Time the program ``lines`` on ``machine``, run by ``interpreter(sink)`` (the machine
+    inputs of a command line: :func:`ngc.options.new_interpreter`).  ``file`` and ``reader`` are
+    :meth:`Interpreter.run`'s; ``on_segment`` and ``on_wait`` are :class:`Timer`'s.  Raises
+    :class:`NgcError` on the first program error."""
+    timer = Timer(machine, on_segment, on_wait)
+    interp = interpreter(timer.sink)
     interp.startup()
-    interp.run(text.splitlines(keepends=True))
+    interp.run(lines, file=file, reader=reader)
     return timer.finish()
+
+
+def time_file(path: str, machine: Machine = DEFAULT_MACHINE,
+              options: MachineOptions | None = None, *,
+              on_segment: SegmentListener | None = None,
+              on_wait: WaitListener | None = None) -> TimeResult:
+    """Time the program file ``path`` (``-``: standard input) on ``machine``, with the machine
+    inputs ``options`` (``-i``, ``-t``, ``-v``, ...) loaded as ``ngc check`` loads them
+    (:func:`ngc.options.load_setup`; the program writes no file).  Raises ``OSError`` if the
+    file cannot be opened, :class:`NgcConfigError` for a machine input and :class:`NgcError` for
+    a program error."""
+    inputs = MachineOptions() if options is None else options
+    setup = load_setup(inputs)
+    name = "<stdin>" if path == "-" else path
+    with text_reader(_open_binary(path)) as handle:
+        return time_lines(handle, machine,
+                          lambda sink: new_interpreter(sink, inputs, setup, write_files=False),
+                          file=name, reader=handle, on_segment=on_segment, on_wait=on_wait)
+
+
+def _open_binary(path: str) -> BinaryIO:
+    """The program file ``path`` (``-``: standard input, left open) as bytes."""
+    if path == "-":
+        return open(sys.stdin.fileno(), "rb", closefd=False)
+    return open(path, "rb")
