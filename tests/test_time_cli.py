@@ -189,7 +189,8 @@ def test_tool_changes_from_the_machine_file(capsys: pytest.CaptureFixture[str],
     assert record["total_s"] == pytest.approx(plain["total_s"] + 12.0, abs=0.01)  # type: ignore[operator]
     assert set(by_tool) == {"T0", "T1", "T2"}
     assert sum(by_tool.values()) == pytest.approx(record["total_s"], abs=0.01)
-    assert by_tool["T2"] == pytest.approx(seconds(plain, "by_tool")["T2"])  # its move only
+    # a change counts for the tool it puts in: T2's time is its move and its change
+    assert by_tool["T2"] == pytest.approx(seconds(plain, "by_tool")["T2"] + 6.0)
     assert seconds(record, "machine")["tool_change_time"] == 6.0
     code, out, _ = run(capsys, "time", "--machine", str(machine), path)
     assert code == 0 and "tool change 12.000 s" in out and "tool change 6 s" in out

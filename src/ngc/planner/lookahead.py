@@ -313,6 +313,7 @@ class Planner:
         seg.time = t
         overlap = self.overlap
         seg.t0 = self.clock + self.group - overlap
+        seg.overlap = overlap  # the start of this move that runs alongside the one before
         self.group += t - overlap
         self.overlap = 0.0
         self.vnow = vout

@@ -126,8 +126,10 @@ class PathSink:
         elif kind is ops.SelectTool:
             self.selected = op[0]  # type: ignore[index]
         elif kind is ops.ChangeTool:
-            self.wait("tool change", self.machine.tool_change_time, line)
-            self.tool = self.selected
+            self.flush_chain()
+            self.planner.stop()
+            self.tool = self.selected  # the change counts for the tool it puts in
+            self.on_wait("tool change", self.machine.tool_change_time, line)
         elif kind is ops.ChangeToolNumber:
             self.tool = self.selected
         elif kind is ops.Dwell:

@@ -64,7 +64,7 @@ class Timer:
             kind = self.last_kind
         else:
             self.last_kind = kind
-        t = seg.time
+        t = seg.time - seg.overlap  # the overlap is counted with the move before
         r.by_kind[kind] += t
         r.by_tool[seg.tool] += t
         parts = seg.parts
