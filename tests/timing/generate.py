@@ -593,7 +593,7 @@ def rings_g61(rng: Rng) -> list[str]:
             first = False
         else:
             e.g1(ox + x, oy + y, zf(x, y))
-        fset = f
+        fset: float | None = f
         for x, y in pts[1:]:
             e.g1(ox + x, oy + y, zf(x, y), f=fset)
             fset = None

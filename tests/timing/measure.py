@@ -92,10 +92,21 @@ def needs_real_time(text: str) -> bool:
     return False
 
 
-def lcnc_version() -> str | None:
+def lcnc_package() -> str | None:
+    """The Debian version of linuxcnc-uspace (upstream version and Debian revision)."""
     r = subprocess.run(["dpkg-query", "-W", "-f", "${Version}", "linuxcnc-uspace"],
                        capture_output=True, text=True)
     return (r.stdout.strip() or None) if r.returncode == 0 else None
+
+
+def tags() -> dict[str, list[str]]:
+    """The generator's tags of what each generated program exercises, by file name."""
+    sys.path.insert(0, str(HERE))
+    try:
+        import generate
+    finally:
+        sys.path.pop(0)
+    return {c.file: list(c.tags) for c in generate.CASES}
 
 
 def measure(tool: Path, program: Path, speed: float, repeat: int) -> dict[str, Any]:
@@ -121,7 +132,7 @@ def measure(tool: Path, program: Path, speed: float, repeat: int) -> dict[str, A
     mts = [r["motion_time"] for r in runs]
 
     def mean(key: str) -> float:
-        return round(sum(r[key] for r in runs) / len(runs), 6)
+        return round(float(sum(r[key] for r in runs)) / len(runs), 6)
 
     return {
         "file": program.name,
@@ -170,7 +181,9 @@ def main(argv: list[str] | None = None) -> int:
     out = args.out or programs[0].parent / "reference.json"
     doc: dict[str, Any] = json.loads(out.read_text()) if out.exists() and not args.fresh else {}
     entries = {e["file"]: e for e in doc.get("programs", [])}
-    version = lcnc_version()
+    package = lcnc_package()
+    version = package.rsplit("-", 1)[0] if package else None
+    kinds = tags() if all(p.parent.resolve() == (HERE / "cases").resolve() for p in programs) else {}
     failed = []
     for prog in programs:
         speed = args.speed or (1.0 if needs_real_time(prog.read_text()) else 2.0)
@@ -182,21 +195,24 @@ def main(argv: list[str] | None = None) -> int:
             failed.append(prog.name)
             continue
         entry["linuxcnc_version"] = version
+        if prog.name in kinds:
+            entry["kinds"] = kinds[prog.name]
         entries[prog.name] = entry
         print(f"{prog.name:32s} {entry['motion_time']:9.3f} s  speed {speed:g}  "
               f"({time.monotonic() - t0:.1f} s wall)", flush=True)
-        write(out, doc, entries, version)
-    write(out, doc, entries, version)
+        write(out, doc, entries, version, package)
+    write(out, doc, entries, version, package)
     print(f"wrote {out}")
     return 1 if failed else 0
 
 
-def write(out: Path, doc: dict[str, Any], entries: dict[str, dict[str, Any]], version: str | None) -> None:
+def write(out: Path, doc: dict[str, Any], entries: dict[str, dict[str, Any]], version: str | None,
+          package: str | None) -> None:
     doc.update({
         "what": "cycle times of G-code programs on LinuxCNC's own trajectory planner "
                 "(headless simulated machine, servo-cycle exact)",
         "linuxcnc_version": version,
-        "linuxcnc_package": f"linuxcnc-uspace {version}" if version else None,
+        "linuxcnc_package": f"linuxcnc-uspace {package} (Debian)" if package else None,
         "tool": "lcnc-timing/lcnc_time.py (../shared/timing)",
         "command": "/usr/bin/python3 lcnc_time.py PROGRAM.ngc " + " ".join(MACHINE_OPTIONS)
                    + " [--speed 2] --json RESULT.json --quiet",
