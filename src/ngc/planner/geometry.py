@@ -110,14 +110,6 @@ class Arc(NamedTuple):
     def end_direction(self) -> Vec:
         return self.direction(self.sweep)
 
-    @property
-    def start(self) -> Pos:
-        return self.point(0.0)
-
-    @property
-    def end(self) -> Pos:
-        return self.point(self.length)
-
 
 def arc_from_canon(start: Pos, end: Pos, center: Vec, normal: Vec, turns: int) -> Arc:
     """The arc LinuxCNC's ``ARC_FEED`` describes: from ``start`` to ``end`` about the axis through
@@ -199,14 +191,6 @@ class Piece(NamedTuple):
 
     def end_direction(self) -> Vec:
         return _direction_at(self.base, self.s0 + self.length)
-
-    @property
-    def start(self) -> Pos:
-        return self.point(0.0)
-
-    @property
-    def end(self) -> Pos:
-        return self.point(self.length)
 
 
 def _direction_at(shape: Line | Arc, s: float) -> Vec:

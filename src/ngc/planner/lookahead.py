@@ -39,7 +39,6 @@ class Segment:
         "accel",
         "end_dir",
         "full_length",
-        "is_line",
         "kind",
         "length",
         "line",
@@ -48,7 +47,6 @@ class Segment:
         "overlap",
         "parts",
         "peak",
-        "plane_accel",
         "reduce",
         "shape",
         "start_dir",
@@ -65,7 +63,7 @@ class Segment:
     )
 
     def __init__(self, kind: str, line: int, tool: int, shape: Shape, vmax: float, accel: float,
-                 plane_accel: float, mode: int, tolerance: float, naive: float,
+                 mode: int, tolerance: float, naive: float,
                  dirs: tuple[Vec, Vec] | None = None) -> None:
         self.kind = kind
         self.line = line
@@ -75,14 +73,12 @@ class Segment:
         self.full_length = shape.length
         self.vmax = vmax
         self.accel = accel  # tangential acceleration limit
-        self.plane_accel = plane_accel
         self.mode = mode  # the term condition the mode in force asks for
         self.tolerance = tolerance
         self.term = mode
         self.vend = 0.0  # greatest speed at the join with the next move
         self.vfinal = 0.0  # speed planned at the end (backward pass)
         self.reduce = 1.0  # acceleration factor left after a kink or an exact-path corner
-        self.is_line = isinstance(shape, Line)
         if dirs is None:
             dirs = (shape.start_direction(), shape.end_direction())
         self.start_dir: Vec = dirs[0]
@@ -152,8 +148,6 @@ class Planner:
         self.group = 0.0  # time of the moves run since the last stop
         self.vnow = 0.0  # speed at the end of the last move run
         self.overlap = 0.0  # how long the next move runs alongside the last one
-        self.started = False
-        self.first_motion: float | None = None
 
     # -- adding moves ------------------------------------------------------------------------
     def add(self, seg: Segment) -> None:
@@ -247,7 +241,7 @@ class Planner:
         prev.length = prev.shape.length
         seg.length = seg.shape.length
         vmax = min(b.speed, self._short_cap(b.length))
-        blend = Segment(BLEND, prev.line, prev.tool, arc, vmax, 0.5 * amax, amax, prev.mode,
+        blend = Segment(BLEND, prev.line, prev.tool, arc, vmax, 0.5 * amax, prev.mode,
                         prev.tolerance, 0.0, (u1, u2))
         prev.term = TANGENT
         prev.vend = vmax

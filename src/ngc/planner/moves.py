@@ -60,8 +60,7 @@ class PathSink:
         self.feed = 0.0  # program units per minute
         self.per_rev = False
         self.rpm = 0.0
-        self.mode = STOP  # rs274 starts in exact-path? (set by the program's first mode call)
-        self.mode = EXACT
+        self.mode = EXACT  # until the program's first SET_MOTION_CONTROL_MODE
         self.tolerance = 0.0  # machine units; 0: none
         self.naive_tol = 0.0  # machine units
         self.tool = 0
@@ -114,22 +113,20 @@ class PathSink:
         elif kind is ops.SelectPlane:
             self.plane = PLANES.get(op.plane, self.plane)  # type: ignore[attr-defined]
         elif kind is ops.SetG5xOffset:
-            self.g5x = [v * self.scale for v in list(op)[1:]] + [0.0] * 0
-            self.g5x = self._angular(self.g5x)
+            self.g5x = self._offset(list(op)[1:])
         elif kind is ops.SetG92Offset:
-            self.g92 = self._angular([v * self.scale for v in op])
+            self.g92 = self._offset(list(op))
         elif kind is ops.SetXYRotation:
             self.rot = math.radians(op.degrees)  # type: ignore[attr-defined]
             self.cos_r, self.sin_r = math.cos(self.rot), math.sin(self.rot)
         elif kind is ops.UseToolLengthOffset:
-            self.tlo = self._angular([v * self.scale for v in list(op)[:6]])
+            self.tlo = self._offset(list(op)[:6])
         elif kind is ops.SelectTool:
             self.selected = op[0]  # type: ignore[index]
         elif kind is ops.ChangeTool:
-            self.flush_chain()
-            self.planner.stop()
+            self.flush_chain()  # the moves before the change keep the tool they were made with
             self.tool = self.selected  # the change counts for the tool it puts in
-            self.on_wait("tool change", self.machine.tool_change_time, line)
+            self.wait("tool change", self.machine.tool_change_time, line)
         elif kind is ops.ChangeToolNumber:
             self.tool = self.selected
         elif kind is ops.Dwell:
@@ -163,9 +160,11 @@ class PathSink:
         self.planner.stop()
 
     # -- positions ----------------------------------------------------------------------------
-    @staticmethod
-    def _angular(values: list[float]) -> list[float]:
-        return values  # A B C are in degrees in every unit system; scaled below
+    def _offset(self, values: list[float]) -> list[float]:
+        """An offset given in program units, in machine units: X Y Z scaled, A B C (degrees in
+        every unit system) as they are."""
+        s = self.scale
+        return [values[0] * s, values[1] * s, values[2] * s, values[3], values[4], values[5]]
 
     def to_machine(self, op: Sequence[float]) -> Pos:
         s = self.scale
@@ -175,9 +174,8 @@ class PathSink:
         if self.rot:
             x, y = x * self.cos_r - y * self.sin_r, x * self.sin_r + y * self.cos_r
         return (x + g5[0] + t[0], y + g5[1] + t[1], op[2] * s + g9[2] + g5[2] + t[2],
-                op[3] + g9[3] / s + g5[3] / s + t[3] / s,
-                op[4] + g9[4] / s + g5[4] / s + t[4] / s,
-                op[5] + g9[5] / s + g5[5] / s + t[5] / s)
+                op[3] + g9[3] + g5[3] + t[3], op[4] + g9[4] + g5[4] + t[4],
+                op[5] + g9[5] + g5[5] + t[5])
 
     # -- limits -------------------------------------------------------------------------------
     def line_limits(self, delta: Sequence[float], length: float) -> tuple[float, float]:
@@ -193,7 +191,7 @@ class PathSink:
             return math.inf, math.inf
         return length / tv, length / ta
 
-    def feed_speed(self, length_units: float = 0.0) -> float:
+    def feed_speed(self) -> float:
         """The programmed feed in machine units per second."""
         rate = self.feed * (self.rpm if self.per_rev else 1.0)
         return rate * self.scale / 60.0
@@ -277,7 +275,7 @@ class PathSink:
             speed = 1e-9
         u = (delta[0] / length, delta[1] / length, delta[2] / length)
         seg = Segment(FEED if feed else RAPID, line, self.tool, Line(start, end, length), speed,
-                      amax, amax, self.mode, self.tolerance, naive, (u, u))
+                      amax, self.mode, self.tolerance, naive, (u, u))
         seg.parts = parts
         self.planner.add(seg)
 
@@ -329,8 +327,8 @@ class PathSink:
         if ap < math.inf and shape.radius > 0:
             vmax = min(vmax, math.sqrt(0.5 * math.sqrt(3.0) * ap * shape.radius))
         speed = min(self.feed_speed(), vmax)
-        naive = length / min(self.feed_speed(), vmax) if speed > 0 else math.inf
-        seg = Segment(ARC, line, self.tool, shape, speed, 0.5 * amax, amax, self.mode,
+        naive = length / speed if speed > 0 else math.inf
+        seg = Segment(ARC, line, self.tool, shape, speed, 0.5 * amax, self.mode,
                       self.tolerance, naive)
         self.planner.add(seg)
 

@@ -35,7 +35,6 @@ WaitListener = Callable[[str, float, float, int], None]
 class TimeResult:
     total_s: float = 0.0
     naive_s: float = 0.0
-    motion_s: float = 0.0
     by_kind: dict[str, float] = field(default_factory=lambda: defaultdict(float))
     by_tool: dict[int, float] = field(default_factory=lambda: defaultdict(float))
     by_line: dict[int, float] = field(default_factory=lambda: defaultdict(float))
