@@ -593,8 +593,7 @@ def _print_time(options: argparse.Namespace, name: str, result: TimeResult,
     rows = time_report.slowest(result, options.top)
     sources = time_report.source_lines(options.file, (line for line, _ in rows))
     if options.format == "json":
-        record = time_report.record(name, result, machine, options.top, sources)
-        sys.stdout.write(dumps(record) + "\n")
+        time_report.write_json(sys.stdout, name, result, machine, options.top, sources)
     else:
         report = time_report.render(name, result, machine, options.top, sources)
         sys.stdout.write(report + "\n")

@@ -9,9 +9,13 @@ from __future__ import annotations
 
 import contextlib
 import heapq
+import json
+import math
 import os
 from collections.abc import Iterable, Mapping
+from typing import TextIO
 
+from .canon.jsonl import dumps
 from .interp.source import open_text_program
 from .planner.machine import ANGULAR_AXES, Machine
 from .planner.timing import KINDS, TimeResult
@@ -154,7 +158,8 @@ def axes_text(machine: Machine) -> str:
 # -- JSON -------------------------------------------------------------------------------------------
 def record(name: str, result: TimeResult, machine: Machine, top: int = 10,
            sources: Mapping[int, str] | None = None) -> dict[str, object]:
-    """``ngc time --format json``'s object (see ``docs/time.md``); numbers rounded to 1e-6."""
+    """``ngc time --format json``'s object but ``by_line`` (:func:`write_json` adds it; see
+    ``docs/time.md``); numbers rounded to 1e-6."""
     value = ratio(result)
     return {
         "file": name,
@@ -163,7 +168,6 @@ def record(name: str, result: TimeResult, machine: Machine, top: int = 10,
         "ratio": None if value is None else _round(value),
         "by_kind": {kind: _round(s) for kind, s in by_kind(result).items()},
         "by_tool": {tool: _round(s) for tool, s in _tools(result).items()},
-        "by_line": {str(line): _round(result.by_line[line]) for line in sorted(result.by_line)},
         "slowest_lines": [{"line": line, "s": _round(s), "source": (sources or {}).get(line)}
                           for line, s in slowest(result, top)],
         "segments": result.segments,
@@ -171,6 +175,27 @@ def record(name: str, result: TimeResult, machine: Machine, top: int = 10,
         "units": machine.linear_units,
         "machine": machine_record(machine),
     }
+
+
+def write_json(out: TextIO, name: str, result: TimeResult, machine: Machine, top: int = 10,
+               sources: Mapping[int, str] | None = None) -> None:
+    """Write ``ngc time --format json``'s object on one line of ``out``: :func:`record` with
+    ``by_line`` last, written a few thousand lines at a time, so that a long program's report
+    takes no more memory than its lines' times."""
+    head = dumps(record(name, result, machine, top, sources))
+    out.write(head[:-1] + ', "by_line": {')
+    chunk: list[str] = []
+    for line, seconds in result.by_line.items():
+        chunk.append(f'"{line}": {_number(seconds)}')
+        if len(chunk) >= 4096:
+            out.write(", ".join(chunk) + ", ")
+            chunk.clear()
+    out.write(", ".join(chunk) + "}}\n")
+
+
+def _number(value: float) -> str:
+    """A rounded JSON number (``null`` if not finite)."""
+    return json.dumps(_round(value)) if math.isfinite(value) else "null"
 
 
 def machine_record(machine: Machine) -> dict[str, object]:

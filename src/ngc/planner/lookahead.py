@@ -16,7 +16,7 @@ import math
 from collections import deque
 from collections.abc import Callable
 
-from .geometry import Arc, BlendArc, Corner, Line, Piece, Pos, Vec, angle_between, blend_arc, unit
+from .geometry import Arc, BlendArc, Corner, Line, Piece, Pos, Vec, angle_between, blend_arc
 from .machine import Machine
 
 # How a move ends (LinuxCNC's "termination conditions").
@@ -37,6 +37,8 @@ class Segment:
 
     __slots__ = (
         "accel",
+        "cut0",
+        "cut1",
         "end_dir",
         "full_length",
         "kind",
@@ -64,7 +66,7 @@ class Segment:
 
     def __init__(self, kind: str, line: int, tool: int, shape: Shape, vmax: float, accel: float,
                  mode: int, tolerance: float, naive: float,
-                 dirs: tuple[Vec, Vec] | None = None) -> None:
+                 dirs: tuple[Vec, Vec] | None = None, term: int | None = None) -> None:
         self.kind = kind
         self.line = line
         self.tool = tool
@@ -75,7 +77,7 @@ class Segment:
         self.accel = accel  # tangential acceleration limit
         self.mode = mode  # the term condition the mode in force asks for
         self.tolerance = tolerance
-        self.term = mode
+        self.term = mode if term is None else term
         self.vend = 0.0  # greatest speed at the join with the next move
         self.vfinal = 0.0  # speed planned at the end (backward pass)
         self.reduce = 1.0  # acceleration factor left after a kink or an exact-path corner
@@ -91,6 +93,16 @@ class Segment:
         self.overlap = 0.0
         self.peak = 0.0
         self.parts: list[tuple[Pos, int, float]] | None = None
+        self.cut0 = 0.0  # how much of a line's start and end blends have taken (path())
+        self.cut1 = 0.0
+
+    def path(self) -> Shape:
+        """The shape this segment runs along: a line without the parts corner blends took."""
+        shape = self.shape
+        if (self.cut0 or self.cut1) and isinstance(shape, Line):
+            return Line(shape.point(self.cut0), shape.point(shape.length - self.cut1),
+                        self.length)
+        return shape
 
     def effective_accel(self) -> float:
         a = self.accel * self.reduce
@@ -140,8 +152,13 @@ class Planner:
         self.period = machine.servo_period
         self.kink_ratio = machine.arc_blend_kink_ratio
         self.depth = max(1, machine.arc_blend_optimization_depth)
-        self.axis_accel = [lim.max_acceleration if lim else 0.0
-                           for lim in (machine.axes.get(a) for a in "XYZ")]
+        axes = [machine.axes.get(a) for a in "XYZ"]
+        # per axis X Y Z: 1 / acceleration (0: the axis has no limit)
+        self.inv_accel = [1.0 / lim.max_acceleration if lim and lim.max_acceleration > 0.0
+                          else 0.0 for lim in axes]
+        # per axis X Y Z: (acceleration, velocity) limits, or None
+        self.axis_limits = [(lim.max_acceleration, lim.max_velocity) if lim else None
+                            for lim in axes]
         self.queue: deque[Segment] = deque()
         self.done = done
         self.clock = 0.0  # time at which the current group of joined moves started
@@ -167,20 +184,19 @@ class Planner:
             prev.term = STOP
             return
         u1, u2 = prev.end_dir, seg.start_dir
-        theta = angle_between(u1, u2)
-        vmax = min(prev.vmax, seg.vmax)
+        dx, dy, dz = u2[0] - u1[0], u2[1] - u1[1], u2[2] - u1[2]
+        sx, sy, sz = u2[0] + u1[0], u2[1] + u1[1], u2[2] + u1[2]
+        theta = 2.0 * math.atan2(math.sqrt(dx * dx + dy * dy + dz * dz),
+                                 math.sqrt(sx * sx + sy * sy + sz * sz))
+        vmax = prev.vmax if prev.vmax < seg.vmax else seg.vmax
         if theta < 1e-9:
             prev.term = TANGENT
             prev.vend = vmax
             return
         # The join is a kink the axes can take in one servo cycle at full speed: the change of
         # velocity, per axis, needs at most the kink ratio of that axis's acceleration.
-        need = 0.0
-        for i, lim in enumerate(self.axis_accel):
-            du = abs(u2[i] - u1[i])
-            if du > 0.0 and lim > 0.0:
-                need = max(need, du / lim)
-        need *= vmax / self.period
+        ia = self.inv_accel
+        need = max(abs(dx) * ia[0], abs(dy) * ia[1], abs(dz) * ia[2]) * vmax / self.period
         if need < self.kink_ratio:
             prev.term = TANGENT
             prev.vend = vmax
@@ -212,62 +228,64 @@ class Planner:
         u1, u2 = prev.end_dir, seg.start_dir
         # acceleration and speed limits in the plane of the corner
         cos_t = u1[0] * u2[0] + u1[1] * u2[1] + u1[2] * u2[2]
-        w = unit((u2[0] - cos_t * u1[0], u2[1] - cos_t * u1[1], u2[2] - cos_t * u1[2]))
-        amax, vlim = self._plane_limits(u1, w)
+        amax, vlim = self._plane_limits(u1, (u2[0] - cos_t * u1[0], u2[1] - cos_t * u1[1],
+                                             u2[2] - cos_t * u1[2]))
         goal = min(max(prev.vmax, seg.vmax), vlim)
-        room = 0.5 * min(prev.full_length, seg.full_length)
-        room = min(room, prev.length, seg.length)
+        room = 0.5 * min(prev.full_length, seg.full_length, 2.0 * prev.length,
+                         2.0 * seg.length)
         b = blend_arc(theta, goal, room, prev.tolerance, 0.5 * amax, SQRT3_2 * amax)
         if b is None or b.trim <= 0.0:
             return None
         d = b.trim
         pl, sl = prev.shape, seg.shape
         if isinstance(pl, Line) and isinstance(sl, Line):
-            corner = pl.end
-            c0, c1, c2 = corner[0], corner[1], corner[2]
-            p_end = (c0 - u1[0] * d, c1 - u1[1] * d, c2 - u1[2] * d, corner[3], corner[4],
-                     corner[5])
-            prev.shape = Line(pl.start, p_end, pl.length - d)
-            s_start = (c0 + u2[0] * d, c1 + u2[1] * d, c2 + u2[2] * d, corner[3], corner[4],
-                       corner[5])
-            seg.shape = Line(s_start, sl.end, sl.length - d)
-            arc: Shape = BlendArc(corner, u1, u2, b.radius, d, theta, b.length)
+            # the lines are cut when their path is asked for (Segment.path)
+            arc: Shape = BlendArc(pl.end, u1, u2, b.radius, d, theta, b.length)
+            prev.cut1 = d
+            seg.cut0 = d
+            prev.length -= d
+            seg.length -= d
         else:
+            pl, sl = prev.path(), seg.path()
+            prev.cut0 = prev.cut1 = seg.cut0 = seg.cut1 = 0.0
             corner = pl.point(pl.length)
             prev.shape = _trimmed(pl, 0.0, pl.length - d)
             seg.shape = _trimmed(sl, d, sl.length - d)
             arc = Corner(prev.shape.point(prev.shape.length), corner, seg.shape.point(0.0),
                          b.length, u1, u2)
-        prev.length = prev.shape.length
-        seg.length = seg.shape.length
-        vmax = min(b.speed, self._short_cap(b.length))
+            prev.length = prev.shape.length
+            seg.length = seg.shape.length
+        vmax = b.speed
+        short = b.length / (2.0 * self.period)  # a blend is at least two servo cycles long
+        if short < vmax:
+            vmax = short
         blend = Segment(BLEND, prev.line, prev.tool, arc, vmax, 0.5 * amax, prev.mode,
-                        prev.tolerance, 0.0, (u1, u2))
+                        prev.tolerance, 0.0, (u1, u2), TANGENT)
         prev.term = TANGENT
         prev.vend = vmax
-        blend.term = TANGENT
         blend.vend = vmax
         # the blend goes between prev and seg
         self.queue.append(blend)
         return blend
 
-    def _plane_limits(self, e1: Vec, e2: Vec) -> tuple[float, float]:
-        """Acceleration and speed any direction in the plane of ``e1`` and ``e2`` can have."""
-        axes = self.machine.axes
+    def _plane_limits(self, e1: Vec, w: Vec) -> tuple[float, float]:
+        """Acceleration and speed any direction in the plane of the unit vector ``e1`` and
+        ``w`` (perpendicular to it, of any length) can have."""
+        n = math.sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
+        f = 1.0 / n if n > 1e-12 else 0.0
         a = v = math.inf
-        for i, name in enumerate("XYZ"):
-            comp = math.hypot(e1[i], e2[i])
-            if comp > 1e-9:
-                lim = axes.get(name)
-                if lim is not None:
-                    a = min(a, lim.max_acceleration / comp)
-                    v = min(v, lim.max_velocity / comp)
+        for i, lim in enumerate(self.axis_limits):
+            if lim is not None:
+                wi = w[i] * f
+                comp = math.sqrt(e1[i] * e1[i] + wi * wi)
+                if comp > 1e-9:
+                    if lim[0] < a * comp:
+                        a = lim[0] / comp
+                    if lim[1] < v * comp:
+                        v = lim[1] / comp
         if self.machine.max_linear_velocity is not None:
             v = min(v, self.machine.max_linear_velocity)
         return a, v
-
-    def _short_cap(self, length: float) -> float:
-        return length / (2.0 * self.period)
 
     # -- planning ------------------------------------------------------------------------------
     def _backward(self) -> None:
@@ -282,7 +300,9 @@ class Planner:
             if seg.term != TANGENT:
                 v = 0.0
             else:
-                a = nxt.effective_accel()
+                a = nxt.accel * nxt.reduce
+                if nxt.term == PARABOLIC:
+                    a *= 0.5
                 v = math.sqrt(nxt.vfinal * nxt.vfinal + 2.0 * a * nxt.length)
                 if v > seg.vend:
                     v = seg.vend

@@ -56,13 +56,16 @@ class PathSink:
         self.tlo = [0.0] * 6
         self.rot = 0.0
         self.cos_r, self.sin_r = 1.0, 0.0
+        self.shift = [0.0] * 6  # g5x + g92 + tool length offset, when there is no rotation
         self.plane = PLANES["CANON_PLANE_XY"]
         self.feed = 0.0  # program units per minute
         self.per_rev = False
         self.rpm = 0.0
+        self.fspeed = 0.0  # the programmed feed in machine units per second
         self.mode = EXACT  # until the program's first SET_MOTION_CONTROL_MODE
         self.tolerance = 0.0  # machine units; 0: none
         self.naive_tol = 0.0  # machine units
+        self.merging = False  # G64 P… Q…: straight feeds go through the naive-CAM chain
         self.tool = 0
         self.selected = 0
         self.spindle_on = False
@@ -74,6 +77,9 @@ class PathSink:
             lim = machine.axes.get(name)
             limits.append((lim.max_velocity, lim.max_acceleration) if lim else None)
         self.limits = limits
+        # (axis, (1 / velocity, 1 / acceleration)) for the axes that have limits
+        self.inv_limits = [(i, (1.0 / lim[0], 1.0 / lim[1])) for i, lim in enumerate(limits)
+                           if lim is not None]
         self.vcap = machine.max_linear_velocity
 
     # -- the sink protocol --------------------------------------------------------------------
@@ -87,40 +93,50 @@ class PathSink:
             self.arc(op, line)  # type: ignore[arg-type]
         elif kind is ops.SetFeedRate:
             self.feed = op.rate  # type: ignore[attr-defined]
+            self._feed_changed()
         elif kind is ops.SetFeedMode:
             self.per_rev = op.mode == 1  # type: ignore[attr-defined]
+            self._feed_changed()
         elif kind is ops.SetSpindleSpeed:
             self.rpm = op.rpm  # type: ignore[attr-defined]
+            self._feed_changed()
             if self.spindle_on:
                 self.wait("spindle", self.machine.spindle_start_time, line)
         elif kind is ops.SetMotionControlMode:
             self.flush_chain()
             self.mode = STOP if op.mode == "CANON_EXACT_STOP" else EXACT  # type: ignore[attr-defined]
             self.tolerance = 0.0
+            self.merging = False
         elif kind is ops.SetMotionControlContinuous:
             self.flush_chain()
             self.mode = PARABOLIC
             self.tolerance = op.tolerance * self.scale  # type: ignore[attr-defined]
+            self.merging = self.naive_tol > 0.0
         elif kind is ops.SetNaivecamTolerance:
             self.flush_chain()
             self.naive_tol = op.tolerance * self.scale  # type: ignore[attr-defined]
+            self.merging = self.mode == PARABOLIC and self.naive_tol > 0.0
         elif kind is ops.UseLengthUnits:
             inch = op.units == "CANON_UNITS_INCHES"  # type: ignore[attr-defined]
             if inch == self.inch_machine:
                 self.scale = 1.0
             else:
                 self.scale = MM_PER_INCH if inch else 1.0 / MM_PER_INCH
+            self._feed_changed()
         elif kind is ops.SelectPlane:
             self.plane = PLANES.get(op.plane, self.plane)  # type: ignore[attr-defined]
         elif kind is ops.SetG5xOffset:
             self.g5x = self._offset(list(op)[1:])
+            self._offsets_changed()
         elif kind is ops.SetG92Offset:
             self.g92 = self._offset(list(op))
+            self._offsets_changed()
         elif kind is ops.SetXYRotation:
             self.rot = math.radians(op.degrees)  # type: ignore[attr-defined]
             self.cos_r, self.sin_r = math.cos(self.rot), math.sin(self.rot)
         elif kind is ops.UseToolLengthOffset:
             self.tlo = self._offset(list(op)[:6])
+            self._offsets_changed()
         elif kind is ops.SelectTool:
             self.selected = op[0]  # type: ignore[index]
         elif kind is ops.ChangeTool:
@@ -146,7 +162,16 @@ class PathSink:
 
     def emit_move(self, kind: type, fields: Sequence[Any], label: str, line: int) -> None:
         if kind is ops.StraightFeed:
-            self.straight(self.to_machine(fields), line, True)
+            if self.merging:
+                if self.rot:
+                    self.see_point(self.to_machine(fields), line)
+                else:  # to_machine, inline: the hot path of CAM surfaces
+                    s, o = self.scale, self.shift
+                    self.see_point((fields[0] * s + o[0], fields[1] * s + o[1],
+                                    fields[2] * s + o[2], fields[3] + o[3], fields[4] + o[4],
+                                    fields[5] + o[5]), line)
+            else:
+                self.straight(self.to_machine(fields), line, True)
         elif kind is ops.StraightTraverse:
             self.straight(self.to_machine(fields), line, False)
         else:
@@ -166,8 +191,20 @@ class PathSink:
         s = self.scale
         return [values[0] * s, values[1] * s, values[2] * s, values[3], values[4], values[5]]
 
+    def _offsets_changed(self) -> None:
+        g5, g9, t = self.g5x, self.g92, self.tlo
+        self.shift = [g5[i] + g9[i] + t[i] for i in range(6)]
+
+    def _feed_changed(self) -> None:
+        rate = self.feed * (self.rpm if self.per_rev else 1.0)
+        self.fspeed = rate * self.scale / 60.0
+
     def to_machine(self, op: Sequence[float]) -> Pos:
         s = self.scale
+        if not self.rot:
+            o = self.shift
+            return (op[0] * s + o[0], op[1] * s + o[1], op[2] * s + o[2], op[3] + o[3],
+                    op[4] + o[4], op[5] + o[5])
         g5, g9, t = self.g5x, self.g92, self.tlo
         x = op[0] * s + g9[0]
         y = op[1] * s + g9[1]
@@ -182,23 +219,20 @@ class PathSink:
         """The speed and acceleration a straight move of ``delta`` (per axis) and ``length`` can
         have: no axis may exceed its own limits."""
         tv = ta = 0.0
-        for i, lim in enumerate(self.limits):
+        for i, inv in self.inv_limits:
             d = abs(delta[i])
-            if d > 1e-12 and lim is not None:
-                tv = max(tv, d / lim[0])
-                ta = max(ta, d / lim[1])
+            if d > 1e-12:
+                if d * inv[0] > tv:
+                    tv = d * inv[0]
+                if d * inv[1] > ta:
+                    ta = d * inv[1]
         if tv <= 0.0:
             return math.inf, math.inf
         return length / tv, length / ta
 
-    def feed_speed(self) -> float:
-        """The programmed feed in machine units per second."""
-        rate = self.feed * (self.rpm if self.per_rev else 1.0)
-        return rate * self.scale / 60.0
-
     # -- moves --------------------------------------------------------------------------------
     def straight(self, end: Pos, line: int, feed: bool) -> None:
-        if feed and self.mode == PARABOLIC and self.naive_tol > 0.0:
+        if feed and self.merging:
             self.see_point(end, line)
             return
         self.flush_chain()
@@ -207,73 +241,77 @@ class PathSink:
     def see_point(self, end: Pos, line: int) -> None:
         """Naive-CAM merging: extend the chain of straight feeds to ``end`` if every point of it
         stays within the tolerance of the straight line from its start to ``end``."""
-        f = self.feed_speed()
+        f = self.fspeed
         chain = self.chain
         pos = self.pos
-        step = math.sqrt((end[0] - pos[0]) ** 2 + (end[1] - pos[1]) ** 2 + (end[2] - pos[2]) ** 2)
+        ex, ey, ez = end[0], end[1], end[2]
+        step = math.sqrt((ex - pos[0]) ** 2 + (ey - pos[1]) ** 2 + (ez - pos[2]) ** 2)
         if chain:
-            last = chain[-1][0]
-            if (f == self.chain_feed and end[3] == last[3] and end[4] == last[4]
-                    and end[5] == last[5] and self._within(end)):
-                chain.append((end, line, step))
-                self.pos = end
-                return
+            if (f == self.chain_feed and end[3] == pos[3] and end[4] == pos[4]
+                    and end[5] == pos[5]):
+                # every point of the chain within the tolerance of the line from its start
+                s = self.chain_start
+                sx, sy, sz = s[0], s[1], s[2]
+                dx, dy, dz = ex - sx, ey - sy, ez - sz
+                ll = dx * dx + dy * dy + dz * dz
+                within = ll > 0.0
+                if within:
+                    tol2 = self.naive_tol * self.naive_tol
+                    inv = 1.0 / ll
+                    for p, _, _ in chain:
+                        px, py, pz = p[0] - sx, p[1] - sy, p[2] - sz
+                        t = (px * dx + py * dy + pz * dz) * inv
+                        if t < 0.0 or t > 1.0:
+                            within = False
+                            break
+                        px -= t * dx
+                        py -= t * dy
+                        pz -= t * dz
+                        if px * px + py * py + pz * pz > tol2:
+                            within = False
+                            break
+                if within:
+                    chain.append((end, line, step))
+                    self.pos = end
+                    return
             self.flush_chain()
         self.pos = end
         self.chain_start = pos
         self.chain_feed = f
-        chain.append((end, line, step))
-
-    def _within(self, end: Pos) -> bool:
-        """Whether every point of the chain is within the tolerance of the line from the chain's
-        start to ``end``."""
-        s = self.chain_start
-        sx, sy, sz = s[0], s[1], s[2]
-        dx, dy, dz = end[0] - sx, end[1] - sy, end[2] - sz
-        ll = dx * dx + dy * dy + dz * dz
-        if ll <= 0.0:
-            return False
-        tol2 = self.naive_tol * self.naive_tol
-        for p, _, _ in self.chain:
-            px, py, pz = p[0] - sx, p[1] - sy, p[2] - sz
-            t = (px * dx + py * dy + pz * dz) / ll
-            if t < 0.0 or t > 1.0:
-                return False
-            ex, ey, ez = px - t * dx, py - t * dy, pz - t * dz
-            if ex * ex + ey * ey + ez * ez > tol2:
-                return False
-        return True
+        self.chain.append((end, line, step))
 
     def flush_chain(self) -> None:
         chain = self.chain
         if not chain:
             return
+        self.chain = []
         end, line, _ = chain[-1]
-        self.line_to(self.chain_start, end, line, True, parts=list(chain))
-        chain.clear()
+        self.line_to(self.chain_start, end, line, True, parts=chain)
 
     def line_to(self, start: Pos, end: Pos, line: int, feed: bool,
                 parts: list[tuple[Pos, int, float]] | None = None) -> None:
-        delta = (end[0] - start[0], end[1] - start[1], end[2] - start[2], end[3] - start[3],
-                 end[4] - start[4], end[5] - start[5])
-        length = math.sqrt(delta[0] * delta[0] + delta[1] * delta[1] + delta[2] * delta[2])
-        if length < 1e-9:
-            length = math.sqrt(delta[3] ** 2 + delta[4] ** 2 + delta[5] ** 2)
+        dx, dy, dz = end[0] - start[0], end[1] - start[1], end[2] - start[2]
+        da, db, dc = end[3] - start[3], end[4] - start[4], end[5] - start[5]
+        length = math.sqrt(dx * dx + dy * dy + dz * dz)
         self.pos = end
         if length < 1e-9:
-            return
-        vmax, amax = self.line_limits(delta, length)
-        if self.vcap is not None:
-            vmax = min(vmax, self.vcap)
+            length = math.sqrt(da * da + db * db + dc * dc)
+            if length < 1e-9:
+                return
+        vmax, amax = self.line_limits((dx, dy, dz, da, db, dc), length)
+        if self.vcap is not None and self.vcap < vmax:
+            vmax = self.vcap
         if feed:
-            f = self.chain_feed if parts else self.feed_speed()
-            speed = min(f, vmax)
+            f = self.chain_feed if parts else self.fspeed
+            speed = f if f < vmax else vmax
         else:
             speed = vmax
-        naive = length / speed if speed > 0 else math.inf
-        if speed <= 0.0:
+        if speed > 0.0:
+            naive = length / speed
+        else:
+            naive = math.inf
             speed = 1e-9
-        u = (delta[0] / length, delta[1] / length, delta[2] / length)
+        u = (dx / length, dy / length, dz / length)
         seg = Segment(FEED if feed else RAPID, line, self.tool, Line(start, end, length), speed,
                       amax, self.mode, self.tolerance, naive, (u, u))
         seg.parts = parts
@@ -326,7 +364,7 @@ class PathSink:
             vmax = min(vmax, self.vcap)
         if ap < math.inf and shape.radius > 0:
             vmax = min(vmax, math.sqrt(0.5 * math.sqrt(3.0) * ap * shape.radius))
-        speed = min(self.feed_speed(), vmax)
+        speed = min(self.fspeed, vmax)
         naive = length / speed if speed > 0 else math.inf
         seg = Segment(ARC, line, self.tool, shape, speed, 0.5 * amax, self.mode,
                       self.tolerance, naive)

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import math
 import sys
+from array import array
 from collections import defaultdict
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import BinaryIO
 
@@ -31,13 +32,54 @@ SegmentListener = Callable[[Segment], None]
 WaitListener = Callable[[str, float, float, int], None]
 
 
+class LineTimes(Mapping[int, float]):
+    """Seconds by program line: a mapping of the lines that took part in a move or a standstill
+    to their time, kept in an array indexed by the line number (9 bytes a line, where a dict
+    takes over a hundred)."""
+
+    __slots__ = ("seconds", "seen")
+
+    def __init__(self) -> None:
+        self.seconds = array("d")
+        self.seen = bytearray()
+
+    def add(self, line: int, seconds: float) -> None:
+        if line >= len(self.seen):
+            self.grow(line)
+        self.seconds[line] += seconds
+        self.seen[line] = 1
+
+    def grow(self, line: int) -> None:
+        """Make room for lines up to ``line`` (>= 0)."""
+        if line < 0:
+            raise IndexError(f"line {line}")
+        more = max(line + 1, 2 * len(self.seen)) - len(self.seen)
+        self.seconds.extend(array("d", bytes(8 * more)))
+        self.seen.extend(bytes(more))
+
+    def __getitem__(self, line: int) -> float:
+        if 0 <= line < len(self.seen) and self.seen[line]:
+            return self.seconds[line]
+        raise KeyError(line)
+
+    def __iter__(self) -> Iterator[int]:
+        seen = self.seen
+        return (line for line in range(len(seen)) if seen[line])
+
+    def __len__(self) -> int:
+        return len(self.seen) - self.seen.count(0)
+
+    def __repr__(self) -> str:
+        return f"LineTimes({dict(self.items())!r})"
+
+
 @dataclass
 class TimeResult:
     total_s: float = 0.0
     naive_s: float = 0.0
     by_kind: dict[str, float] = field(default_factory=lambda: defaultdict(float))
     by_tool: dict[int, float] = field(default_factory=lambda: defaultdict(float))
-    by_line: dict[int, float] = field(default_factory=lambda: defaultdict(float))
+    by_line: LineTimes = field(default_factory=LineTimes)
     segments: int = 0
     length: float = 0.0
 
@@ -55,6 +97,10 @@ class Timer:
         self.planner = Planner(machine, self.segment)
         self.sink = PathSink(machine, self.planner, self.wait)
         self.last_kind = "feed"
+        # time of the run of segments of one kind and one tool, not yet in by_kind and by_tool
+        self.run_kind: str | None = None
+        self.run_tool = 0
+        self.run_time = 0.0
 
     def segment(self, seg: Segment) -> None:
         r = self.result
@@ -64,15 +110,29 @@ class Timer:
         else:
             self.last_kind = kind
         t = seg.time - seg.overlap  # the overlap is counted with the move before
-        r.by_kind[kind] += t
-        r.by_tool[seg.tool] += t
-        parts = seg.parts
-        if parts and len(parts) > 1:
-            total = sum(p[2] for p in parts) or 1.0
-            for _, line, length in parts:
-                r.by_line[line] += t * length / total
+        if kind == self.run_kind and seg.tool == self.run_tool:
+            self.run_time += t
         else:
-            r.by_line[seg.line] += t
+            self._close_run()
+            self.run_kind, self.run_tool, self.run_time = kind, seg.tool, t
+        parts = seg.parts
+        by_line = r.by_line
+        if parts and len(parts) > 1:
+            total = 0.0
+            top = 0
+            for _, line, length in parts:
+                total += length
+                if line > top:
+                    top = line
+            if top >= len(by_line.seen):
+                by_line.grow(top)
+            share = t / total if total > 0.0 else t
+            seconds, seen = by_line.seconds, by_line.seen
+            for _, line, length in parts:
+                seconds[line] += share * length
+                seen[line] = 1
+        else:
+            by_line.add(seg.line, t)
         if seg.naive != math.inf:
             r.naive_s += seg.naive
         r.segments += 1
@@ -91,14 +151,22 @@ class Timer:
         self.planner.clock += t
         r = self.result
         r.by_kind[kind] += t
-        r.by_line[line] += t
+        r.by_line.add(line, t)
         r.by_tool[self.sink.tool] += t
         r.naive_s += seconds
         if self.on_wait is not None:
             self.on_wait(kind, start, t, line)
 
+    def _close_run(self) -> None:
+        if self.run_kind is not None:
+            r = self.result
+            r.by_kind[self.run_kind] += self.run_time
+            r.by_tool[self.run_tool] += self.run_time
+            self.run_kind, self.run_time = None, 0.0
+
     def finish(self) -> TimeResult:
         self.sink.flush()
+        self._close_run()
         self.result.total_s = self.planner.total
         return self.result
 

@@ -103,7 +103,7 @@ class Profile:
     @classmethod
     def of(cls, seg: Segment) -> Profile:
         """The profile of a finished segment."""
-        return cls(seg.shape, t0=seg.t0, time=seg.time, vin=seg.vin, peak=seg.peak,
+        return cls(seg.path(), t0=seg.t0, time=seg.time, vin=seg.vin, peak=seg.peak,
                    vout=seg.vout, accel=seg.effective_accel(), line=seg.line)
 
     def distance(self, t: float) -> float:
