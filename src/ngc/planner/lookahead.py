@@ -159,6 +159,7 @@ class Planner:
         # per axis X Y Z: (acceleration, velocity) limits, or None
         self.axis_limits = [(lim.max_acceleration, lim.max_velocity) if lim else None
                             for lim in axes]
+        self.vcap = machine.max_linear_velocity
         self.queue: deque[Segment] = deque()
         self.done = done
         self.clock = 0.0  # time at which the current group of joined moves started
@@ -174,7 +175,8 @@ class Planner:
             self._join(prev, seg)
         q.append(seg)
         self._backward()
-        while len(q) > self.depth + 2:
+        window = self.depth + 2
+        while len(q) > window:
             self._run(q.popleft())
 
     def _join(self, prev: Segment, seg: Segment) -> None:
@@ -228,8 +230,24 @@ class Planner:
         u1, u2 = prev.end_dir, seg.start_dir
         # acceleration and speed limits in the plane of the corner
         cos_t = u1[0] * u2[0] + u1[1] * u2[1] + u1[2] * u2[2]
-        amax, vlim = self._plane_limits(u1, (u2[0] - cos_t * u1[0], u2[1] - cos_t * u1[1],
-                                             u2[2] - cos_t * u1[2]))
+        wx, wy, wz = u2[0] - cos_t * u1[0], u2[1] - cos_t * u1[1], u2[2] - cos_t * u1[2]
+        n = math.sqrt(wx * wx + wy * wy + wz * wz)
+        if n > 1e-12:
+            wx, wy, wz = wx / n, wy / n, wz / n
+        else:
+            wx = wy = wz = 0.0
+        # each axis's share of the plane: the length of its unit vector projected on it
+        amax = vlim = math.inf
+        for lim, e, w in zip(self.axis_limits, u1, (wx, wy, wz)):
+            if lim is not None:
+                comp = math.sqrt(e * e + w * w)
+                if comp > 1e-9:
+                    if lim[0] < amax * comp:
+                        amax = lim[0] / comp
+                    if lim[1] < vlim * comp:
+                        vlim = lim[1] / comp
+        if self.vcap is not None and self.vcap < vlim:
+            vlim = self.vcap
         goal = min(max(prev.vmax, seg.vmax), vlim)
         room = 0.5 * min(prev.full_length, seg.full_length, 2.0 * prev.length,
                          2.0 * seg.length)
@@ -268,25 +286,6 @@ class Planner:
         self.queue.append(blend)
         return blend
 
-    def _plane_limits(self, e1: Vec, w: Vec) -> tuple[float, float]:
-        """Acceleration and speed any direction in the plane of the unit vector ``e1`` and
-        ``w`` (perpendicular to it, of any length) can have."""
-        n = math.sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2])
-        f = 1.0 / n if n > 1e-12 else 0.0
-        a = v = math.inf
-        for i, lim in enumerate(self.axis_limits):
-            if lim is not None:
-                wi = w[i] * f
-                comp = math.sqrt(e1[i] * e1[i] + wi * wi)
-                if comp > 1e-9:
-                    if lim[0] < a * comp:
-                        a = lim[0] / comp
-                    if lim[1] < v * comp:
-                        v = lim[1] / comp
-        if self.machine.max_linear_velocity is not None:
-            v = min(v, self.machine.max_linear_velocity)
-        return a, v
-
     # -- planning ------------------------------------------------------------------------------
     def _backward(self) -> None:
         q = self.queue
@@ -319,9 +318,13 @@ class Planner:
 
     # -- running ------------------------------------------------------------------------------
     def _run(self, seg: Segment) -> None:
-        a = seg.effective_accel()
-        t, vout, peak = profile_time(self.vnow, seg.vfinal, seg.vmax, a, seg.length)
-        seg.vin = self.vnow
+        term = seg.term
+        a = seg.accel * seg.reduce
+        if term == PARABOLIC:
+            a *= 0.5
+        vin = self.vnow
+        t, vout, peak = profile_time(vin, seg.vfinal, seg.vmax, a, seg.length)
+        seg.vin = vin
         seg.vout = vout
         seg.peak = peak
         seg.time = t
@@ -329,14 +332,14 @@ class Planner:
         seg.t0 = self.clock + self.group - overlap
         seg.overlap = overlap  # the start of this move that runs alongside the one before
         self.group += t - overlap
-        self.overlap = 0.0
         self.vnow = vout
-        nxt = self.queue[0] if self.queue else None
-        if seg.term == PARABOLIC and nxt is not None:
+        if term == PARABOLIC and self.queue:
             # The next move starts while this one slows down: the ramps overlap.
-            self.overlap = min(parabolic_overlap(seg, a, peak, nxt), t)
-        elif seg.term != TANGENT or vout <= 0.0:
-            self._settle()
+            self.overlap = min(parabolic_overlap(seg, a, peak, self.queue[0]), t)
+        else:
+            self.overlap = 0.0
+            if term != TANGENT or vout <= 0.0:
+                self._settle()
         self.done(seg)
 
     def _settle(self) -> None:
