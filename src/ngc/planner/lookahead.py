@@ -238,7 +238,7 @@ class Planner:
             wx = wy = wz = 0.0
         # each axis's share of the plane: the length of its unit vector projected on it
         amax = vlim = math.inf
-        for lim, e, w in zip(self.axis_limits, u1, (wx, wy, wz)):
+        for lim, e, w in zip(self.axis_limits, u1, (wx, wy, wz), strict=True):
             if lim is not None:
                 comp = math.sqrt(e * e + w * w)
                 if comp > 1e-9:
