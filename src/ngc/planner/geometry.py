@@ -175,6 +175,32 @@ def blend_arc(theta: float, goal: float, room: float, tolerance: float,
     return Blend(r, r * tan_half, r * theta, speed)
 
 
+def corner_reach(theta: float, tolerance: float, radius: float) -> float:
+    """How far from a join a blend drawn as a :class:`Corner` may start and end and still stay
+    within ``tolerance`` of the path, where the moves turn by ``theta`` and the tighter of them
+    curves with ``radius`` (``math.inf``: both straight).
+
+    Such a blend is within d·sin(θ/2)/2 of the tangent lines at the join, and each move within
+    d²/(2·radius) of its tangent line over a length d: d²/radius + d·sin(θ/2)/2 is kept within
+    the tolerance.
+
+    >>> round(corner_reach(0.5, 0.01, math.inf), 4), round(corner_reach(0.0, 0.01, 2.5), 4)
+    (0.0808, 0.1581)
+    """
+    s = 0.5 * math.sin(0.5 * theta)
+    if radius == math.inf:
+        return tolerance / s if s > 0.0 else math.inf
+    k = 1.0 / radius
+    return (math.sqrt(s * s + 4.0 * k * tolerance) - s) / (2.0 * k)
+
+
+def radius_of(shape: object) -> float:
+    """The radius a shape curves with (``math.inf`` for a line)."""
+    if isinstance(shape, Piece):
+        shape = shape.base
+    return shape.radius if isinstance(shape, Arc) else math.inf
+
+
 class Piece(NamedTuple):
     """The part of a ``base`` shape from path length ``s0`` on, ``length`` long (an arc with its
     ends given to corner blends)."""

@@ -16,7 +16,19 @@ import math
 from collections import deque
 from collections.abc import Callable
 
-from .geometry import Arc, BlendArc, Corner, Line, Piece, Pos, Vec, angle_between, blend_arc
+from .geometry import (
+    Arc,
+    BlendArc,
+    Corner,
+    Line,
+    Piece,
+    Pos,
+    Vec,
+    angle_between,
+    blend_arc,
+    corner_reach,
+    radius_of,
+)
 from .machine import Machine
 
 # How a move ends (LinuxCNC's "termination conditions").
@@ -251,11 +263,16 @@ class Planner:
         goal = min(max(prev.vmax, seg.vmax), vlim)
         room = 0.5 * min(prev.full_length, seg.full_length, 2.0 * prev.length,
                          2.0 * seg.length)
+        pl, sl = prev.shape, seg.shape
+        lines = isinstance(pl, Line) and isinstance(sl, Line)
+        if not lines and prev.tolerance > 0.0:
+            # a blend with an arc is drawn as a Corner: keep it within the tolerance
+            room = min(room, corner_reach(theta, prev.tolerance,
+                                          min(radius_of(pl), radius_of(sl))))
         b = blend_arc(theta, goal, room, prev.tolerance, 0.5 * amax, SQRT3_2 * amax)
         if b is None or b.trim <= 0.0:
             return None
         d = b.trim
-        pl, sl = prev.shape, seg.shape
         if isinstance(pl, Line) and isinstance(sl, Line):
             # the lines are cut when their path is asked for (Segment.path)
             arc: Shape = BlendArc(pl.end, u1, u2, b.radius, d, theta, b.length)
