@@ -8,7 +8,6 @@ file named once the program has run without an error.
 from __future__ import annotations
 
 import contextlib
-import heapq
 import json
 import math
 import os
@@ -52,7 +51,7 @@ def by_kind(result: TimeResult) -> dict[str, float]:
 
 def slowest(result: TimeResult, count: int) -> list[tuple[int, float]]:
     """The ``count`` lines that take the most time, slowest first (the earlier line on a tie)."""
-    return heapq.nlargest(count, result.by_line.items(), key=lambda item: (item[1], -item[0]))
+    return result.by_line.slowest(count)
 
 
 def source_lines(path: str, numbers: Iterable[int]) -> dict[int, str]:

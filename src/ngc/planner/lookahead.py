@@ -22,7 +22,6 @@ from .geometry import (
     Corner,
     Line,
     Piece,
-    Pos,
     Vec,
     angle_between,
     blend_arc,
@@ -60,6 +59,7 @@ class Segment:
         "naive",
         "overlap",
         "parts",
+        "parts_length",
         "peak",
         "reduce",
         "shape",
@@ -75,6 +75,15 @@ class Segment:
         "vmax",
         "vout",
     )
+
+    # set when the segment is run: its time, start time, speeds, and how long its start runs
+    # alongside the move before
+    time: float
+    t0: float
+    vin: float
+    vout: float
+    peak: float
+    overlap: float
 
     def __init__(self, kind: str, line: int, tool: int, shape: Shape, vmax: float, accel: float,
                  mode: int, tolerance: float, naive: float,
@@ -98,13 +107,9 @@ class Segment:
         self.start_dir: Vec = dirs[0]
         self.end_dir: Vec = dirs[1]
         self.naive = naive
-        self.time = 0.0
-        self.vin = 0.0
-        self.vout = 0.0
-        self.t0 = 0.0
-        self.overlap = 0.0
-        self.peak = 0.0
-        self.parts: list[tuple[Pos, int, float]] | None = None
+        # the (line, length) of the programmed moves merged into this one, and their sum
+        self.parts: list[tuple[int, float]] | None = None
+        self.parts_length = 0.0
         self.cut0 = 0.0  # how much of a line's start and end blends have taken (path())
         self.cut1 = 0.0
 

@@ -57,6 +57,7 @@ class PathSink:
         self.rot = 0.0
         self.cos_r, self.sin_r = 1.0, 0.0
         self.shift = [0.0] * 6  # g5x + g92 + tool length offset, when there is no rotation
+        self.identity = True  # program coordinates are machine coordinates
         self.plane = PLANES["CANON_PLANE_XY"]
         self.feed = 0.0  # program units per minute
         self.per_rev = False
@@ -65,11 +66,16 @@ class PathSink:
         self.mode = EXACT  # until the program's first SET_MOTION_CONTROL_MODE
         self.tolerance = 0.0  # machine units; 0: none
         self.naive_tol = 0.0  # machine units
+        self.naive_tol2 = 0.0  # its square
         self.merging = False  # G64 P… Q…: straight feeds go through the naive-CAM chain
         self.tool = 0
         self.selected = 0
         self.spindle_on = False
-        self.chain: list[tuple[Pos, int, float]] = []  # naive-CAM: points after chain_start
+        # naive-CAM: the points after chain_start (relative to it), the lines and lengths of the
+        # moves to them, and the sum of those lengths
+        self.chain: list[tuple[float, float, float]] = []
+        self.parts: list[tuple[int, float]] = []
+        self.chain_length = 0.0
         self.chain_start: Pos = self.pos
         self.chain_feed = 0.0
         limits = []
@@ -115,6 +121,7 @@ class PathSink:
         elif kind is ops.SetNaivecamTolerance:
             self.flush_chain()
             self.naive_tol = op.tolerance * self.scale  # type: ignore[attr-defined]
+            self.naive_tol2 = self.naive_tol * self.naive_tol
             self.merging = self.mode == PARABOLIC and self.naive_tol > 0.0
         elif kind is ops.UseLengthUnits:
             inch = op.units == "CANON_UNITS_INCHES"  # type: ignore[attr-defined]
@@ -123,6 +130,7 @@ class PathSink:
             else:
                 self.scale = MM_PER_INCH if inch else 1.0 / MM_PER_INCH
             self._feed_changed()
+            self._offsets_changed()
         elif kind is ops.SelectPlane:
             self.plane = PLANES.get(op.plane, self.plane)  # type: ignore[attr-defined]
         elif kind is ops.SetG5xOffset:
@@ -134,6 +142,7 @@ class PathSink:
         elif kind is ops.SetXYRotation:
             self.rot = math.radians(op.degrees)  # type: ignore[attr-defined]
             self.cos_r, self.sin_r = math.cos(self.rot), math.sin(self.rot)
+            self._offsets_changed()
         elif kind is ops.UseToolLengthOffset:
             self.tlo = self._offset(list(op)[:6])
             self._offsets_changed()
@@ -163,13 +172,9 @@ class PathSink:
     def emit_move(self, kind: type, fields: Sequence[Any], label: str, line: int) -> None:
         if kind is ops.StraightFeed:
             if self.merging:
-                if self.rot:
-                    self.see_point(self.to_machine(fields), line)
-                else:  # to_machine, inline: the hot path of CAM surfaces
-                    s, o = self.scale, self.shift
-                    self.see_point((fields[0] * s + o[0], fields[1] * s + o[1],
-                                    fields[2] * s + o[2], fields[3] + o[3], fields[4] + o[4],
-                                    fields[5] + o[5]), line)
+                # the hot path of CAM surfaces
+                self.see_point(tuple(fields) if self.identity else self.to_machine(fields),
+                               line)
             else:
                 self.straight(self.to_machine(fields), line, True)
         elif kind is ops.StraightTraverse:
@@ -194,6 +199,7 @@ class PathSink:
     def _offsets_changed(self) -> None:
         g5, g9, t = self.g5x, self.g92, self.tlo
         self.shift = [g5[i] + g9[i] + t[i] for i in range(6)]
+        self.identity = self.scale == 1.0 and not self.rot and not any(self.shift)
 
     def _feed_changed(self) -> None:
         rate = self.feed * (self.rpm if self.per_rev else 1.0)
@@ -242,54 +248,55 @@ class PathSink:
         """Naive-CAM merging: extend the chain of straight feeds to ``end`` if every point of it
         stays within the tolerance of the straight line from its start to ``end``."""
         f = self.fspeed
-        chain = self.chain
         pos = self.pos
         ex, ey, ez = end[0], end[1], end[2]
-        step = math.sqrt((ex - pos[0]) ** 2 + (ey - pos[1]) ** 2 + (ez - pos[2]) ** 2)
-        if chain:
+        sx, sy, sz = ex - pos[0], ey - pos[1], ez - pos[2]
+        step = math.sqrt(sx * sx + sy * sy + sz * sz)
+        points = self.chain
+        if points:
             if (f == self.chain_feed and end[3] == pos[3] and end[4] == pos[4]
                     and end[5] == pos[5]):
                 # every point of the chain within the tolerance of the line from its start
                 s = self.chain_start
-                sx, sy, sz = s[0], s[1], s[2]
-                dx, dy, dz = ex - sx, ey - sy, ez - sz
+                dx, dy, dz = ex - s[0], ey - s[1], ez - s[2]
                 ll = dx * dx + dy * dy + dz * dz
-                within = ll > 0.0
-                if within:
-                    tol2 = self.naive_tol * self.naive_tol
+                if ll > 0.0:
+                    tol2 = self.naive_tol2
                     inv = 1.0 / ll
-                    for p, _, _ in chain:
-                        px, py, pz = p[0] - sx, p[1] - sy, p[2] - sz
+                    for px, py, pz in points:
                         t = (px * dx + py * dy + pz * dz) * inv
                         if t < 0.0 or t > 1.0:
-                            within = False
                             break
                         px -= t * dx
                         py -= t * dy
                         pz -= t * dz
                         if px * px + py * py + pz * pz > tol2:
-                            within = False
                             break
-                if within:
-                    chain.append((end, line, step))
-                    self.pos = end
-                    return
+                    else:
+                        points.append((dx, dy, dz))
+                        self.parts.append((line, step))
+                        self.chain_length += step
+                        self.pos = end
+                        return
             self.flush_chain()
         self.pos = end
         self.chain_start = pos
         self.chain_feed = f
-        self.chain.append((end, line, step))
+        self.chain = [(sx, sy, sz)]
+        self.parts = [(line, step)]
+        self.chain_length = step
 
     def flush_chain(self) -> None:
-        chain = self.chain
-        if not chain:
+        if not self.chain:
             return
         self.chain = []
-        end, line, _ = chain[-1]
-        self.line_to(self.chain_start, end, line, True, parts=chain)
+        parts = self.parts
+        self.line_to(self.chain_start, self.pos, parts[-1][0], True, parts, self.chain_length)
 
     def line_to(self, start: Pos, end: Pos, line: int, feed: bool,
-                parts: list[tuple[Pos, int, float]] | None = None) -> None:
+                parts: list[tuple[int, float]] | None = None, parts_length: float = 0.0) -> None:
+        """A straight move; ``parts`` are the (line, length) of the programmed moves a naive-CAM
+        chain merged into it, ``parts_length`` their sum."""
         dx, dy, dz = end[0] - start[0], end[1] - start[1], end[2] - start[2]
         da, db, dc = end[3] - start[3], end[4] - start[4], end[5] - start[5]
         length = math.sqrt(dx * dx + dy * dy + dz * dz)
@@ -315,6 +322,7 @@ class PathSink:
         seg = Segment(FEED if feed else RAPID, line, self.tool, Line(start, end, length), speed,
                       amax, self.mode, self.tolerance, naive, (u, u))
         seg.parts = parts
+        seg.parts_length = parts_length
         self.planner.add(seg)
 
     def arc(self, op: ops.ArcFeed, line: int) -> None:

@@ -9,12 +9,14 @@ trajectory writer of ``ngc time --trajectory`` (:mod:`ngc.planner.trajectory`) i
 
 from __future__ import annotations
 
+import heapq
 import math
 import sys
 from array import array
 from collections import defaultdict
-from collections.abc import Callable, Iterable, Iterator, Mapping
+from collections.abc import Callable, ItemsView, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
+from itertools import compress, count
 from typing import BinaryIO
 
 from ..canon.ops import Sink
@@ -63,14 +65,33 @@ class LineTimes(Mapping[int, float]):
         raise KeyError(line)
 
     def __iter__(self) -> Iterator[int]:
-        seen = self.seen
-        return (line for line in range(len(seen)) if seen[line])
+        return compress(count(), self.seen)
+
+    def items(self) -> ItemsView[int, float]:
+        return _LineItems(self)
+
+    def slowest(self, number: int) -> list[tuple[int, float]]:
+        """The ``number`` lines that took the most time, slowest first (the earlier line on a
+        tie), as (line, seconds)."""
+        best = heapq.nlargest(number, compress(zip(self.seconds, count(0, -1)), self.seen))
+        return [(-line, seconds) for seconds, line in best]
 
     def __len__(self) -> int:
         return len(self.seen) - self.seen.count(0)
 
     def __repr__(self) -> str:
         return f"LineTimes({dict(self.items())!r})"
+
+
+class _LineItems(ItemsView[int, float]):
+    """The (line, seconds) pairs of :class:`LineTimes`, read straight from its arrays."""
+
+    def __init__(self, times: LineTimes) -> None:
+        super().__init__(times)
+        self.times = times
+
+    def __iter__(self) -> Iterator[tuple[int, float]]:
+        return compress(zip(count(), self.times.seconds), self.times.seen)
 
 
 @dataclass
@@ -118,17 +139,13 @@ class Timer:
         parts = seg.parts
         by_line = r.by_line
         if parts and len(parts) > 1:
-            total = 0.0
-            top = 0
-            for _, line, length in parts:
-                total += length
-                if line > top:
-                    top = line
+            top = max(parts)[0]  # the greatest line
             if top >= len(by_line.seen):
                 by_line.grow(top)
+            total = seg.parts_length
             share = t / total if total > 0.0 else t
             seconds, seen = by_line.seconds, by_line.seen
-            for _, line, length in parts:
+            for line, length in parts:
                 seconds[line] += share * length
                 seen[line] = 1
         else:
