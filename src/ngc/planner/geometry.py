@@ -16,6 +16,9 @@ Pos = tuple[float, float, float, float, float, float]
 
 EPS = 1e-12
 
+# A NamedTuple made without its Python __new__ (three times faster): _new(Line, (p, q, n)).
+_new = tuple.__new__
+
 
 def sub(p: Vec, q: Vec) -> Vec:
     return (p[0] - q[0], p[1] - q[1], p[2] - q[2])
@@ -164,15 +167,23 @@ def blend_arc(theta: float, goal: float, room: float, tolerance: float,
         return None
     half = 0.5 * theta
     tan_half = math.tan(half)
-    r_goal = max(goal * goal / normal, goal * goal / (tangential * theta))
-    r = min(r_goal, room / tan_half)
+    g2 = goal * goal
+    r = g2 / normal
+    if tangential * theta * r < g2:  # (min and max written out: a corner of every G64 move)
+        r = g2 / (tangential * theta)
+    if r * tan_half > room:
+        r = room / tan_half
     if tolerance > 0.0:
         cos_half = math.cos(half)
-        r = min(r, tolerance * cos_half / (1.0 - cos_half))
+        r_tol = tolerance * cos_half / (1.0 - cos_half)
+        if r_tol < r:
+            r = r_tol
     if r <= EPS:
         return None
-    speed = min(goal, math.sqrt(normal * r))
-    return Blend(r, r * tan_half, r * theta, speed)
+    speed = math.sqrt(normal * r)
+    if goal < speed:
+        speed = goal
+    return _new(Blend, (r, r * tan_half, r * theta, speed))
 
 
 def corner_reach(theta: float, tolerance: float, radius: float) -> float:

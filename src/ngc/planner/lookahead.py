@@ -42,6 +42,8 @@ Shape = Line | Arc | Piece | Corner | BlendArc
 
 SQRT3_2 = math.sqrt(3.0) / 2.0
 
+_new = tuple.__new__  # a NamedTuple made without its Python __new__
+
 
 class Segment:
     """One move for the planner."""
@@ -280,7 +282,7 @@ class Planner:
         d = b.trim
         if isinstance(pl, Line) and isinstance(sl, Line):
             # the lines are cut when their path is asked for (Segment.path)
-            arc: Shape = BlendArc(pl.end, u1, u2, b.radius, d, theta, b.length)
+            arc: Shape = _new(BlendArc, (pl.end, u1, u2, b.radius, d, theta, b.length))
             prev.cut1 = d
             seg.cut0 = d
             prev.length -= d

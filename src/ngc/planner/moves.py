@@ -24,6 +24,8 @@ from .lookahead import ARC, EXACT, FEED, PARABOLIC, RAPID, STOP, Planner, Segmen
 from .machine import Machine
 
 MM_PER_INCH = 25.4
+
+_new = tuple.__new__  # a NamedTuple made without its Python __new__
 AXES6 = "XYZABC"
 
 # Each plane's (first axis, second axis, normal axis) index, as ARC_FEED gives them.
@@ -319,8 +321,9 @@ class PathSink:
             naive = math.inf
             speed = 1e-9
         u = (dx / length, dy / length, dz / length)
-        seg = Segment(FEED if feed else RAPID, line, self.tool, Line(start, end, length), speed,
-                      amax, self.mode, self.tolerance, naive, (u, u))
+        shape = _new(Line, (start, end, length))
+        seg = Segment(FEED if feed else RAPID, line, self.tool, shape, speed, amax, self.mode,
+                      self.tolerance, naive, (u, u))
         seg.parts = parts
         seg.parts_length = parts_length
         self.planner.add(seg)
