@@ -16,6 +16,7 @@ import math
 from collections import deque
 from collections.abc import Callable
 
+from .arcjoin import arc_arc_fit, arc_blend_cap, coplanar, helical, line_arc_fit
 from .geometry import (
     Arc,
     BlendArc,
@@ -54,6 +55,7 @@ class Segment:
         "cut1",
         "end_dir",
         "full_length",
+        "half",
         "kind",
         "length",
         "line",
@@ -65,6 +67,7 @@ class Segment:
         "peak",
         "reduce",
         "shape",
+        "soft",
         "start_dir",
         "t0",
         "term",
@@ -76,6 +79,7 @@ class Segment:
         "vin",
         "vmax",
         "vout",
+        "vsoft",
     )
 
     # set when the segment is run: its time, start time, speeds, and how long its start runs
@@ -98,6 +102,9 @@ class Segment:
         self.full_length = shape.length
         self.vmax = vmax
         self.accel = accel  # tangential acceleration limit
+        self.half = 0.5 * accel  # the limit next to a parabolic blend
+        self.soft = False  # starts with a parabolic blend
+        self.vsoft = math.inf  # the speed limit next to a parabolic blend
         self.mode = mode  # the term condition the mode in force asks for
         self.tolerance = tolerance
         self.term = mode if term is None else term
@@ -124,10 +131,9 @@ class Segment:
         return shape
 
     def effective_accel(self) -> float:
-        a = self.accel * self.reduce
-        if self.term == PARABOLIC:
-            a *= 0.5
-        return a
+        if self.term == PARABOLIC or self.soft:
+            return self.half * self.reduce
+        return self.accel * self.reduce
 
 
 Done = Callable[[Segment], None]
@@ -234,16 +240,23 @@ class Planner:
             prev.reduce = min(prev.reduce, factor)
             seg.reduce = min(seg.reduce, factor)
             return
-        # blend mode: a corner between lines is rounded by an arc; other corners (with an arc)
-        # keep a parabolic blend
+        # blend mode: a corner is rounded by an arc where it can be (arcjoin), else it keeps a
+        # parabolic blend
         if self.machine.arc_blend_enable and prev.kind != BLEND:
-            lines = both_lines(prev, seg)
-            if (lines or prev.tolerance > 0.0) and self._blend(prev, seg, theta) is not None:
+            if both_lines(prev, seg):
+                if self._blend(prev, seg, theta) is None:
+                    prev.term = STOP
                 return
-            if lines:
-                prev.term = STOP
+            # with an arc: rounded under G64 P, or in one plane; never beside a helix
+            if ((prev.tolerance > 0.0 or coplanar(prev.shape, seg.shape))
+                    and not helical(prev.shape) and not helical(seg.shape)
+                    and self._blend(prev, seg, theta) is not None):
                 return
         prev.term = PARABOLIC
+        seg.soft = True
+        # both moves of a parabolic blend keep half the normal acceleration: arcs slow down
+        prev.vmax = min(prev.vmax, prev.vsoft)
+        seg.vmax = min(seg.vmax, seg.vsoft)
 
     def _blend(self, prev: Segment, seg: Segment, theta: float) -> Segment | None:
         u1, u2 = prev.end_dir, seg.start_dir
@@ -276,6 +289,8 @@ class Planner:
             # a blend with an arc is drawn as a Corner: keep it within the tolerance
             room = min(room, corner_reach(theta, prev.tolerance,
                                           min(radius_of(pl), radius_of(sl))))
+        if not lines:
+            goal = min(goal, arc_blend_cap(prev, seg, theta, amax))
         b = blend_arc(theta, goal, room, prev.tolerance, 0.5 * amax, SQRT3_2 * amax)
         if b is None or b.trim <= 0.0:
             return None
@@ -291,10 +306,24 @@ class Planner:
             pl, sl = prev.path(), seg.path()
             prev.cut0 = prev.cut1 = seg.cut0 = seg.cut1 = 0.0
             corner = pl.point(pl.length)
-            prev.shape = _trimmed(pl, 0.0, pl.length - d)
-            seg.shape = _trimmed(sl, d, sl.length - d)
+            d0 = d1 = d
+            length = b.length
+            fit = None
+            if coplanar(pl, sl):
+                # a circle tangent to the line or arc on each side
+                if isinstance(pl, Line) or isinstance(sl, Line):
+                    fit = line_arc_fit(prev, seg, theta, b.radius, room, b.speed,
+                                       SQRT3_2 * amax)
+                else:
+                    fit = arc_arc_fit(prev, seg, theta, b.radius, room, b.speed,
+                                      SQRT3_2 * amax)
+            if fit is not None:
+                d0, d1, length = fit
+            prev.shape = _trimmed(pl, 0.0, pl.length - d0)
+            seg.shape = _trimmed(sl, d1, sl.length - d1)
             arc = Corner(prev.shape.point(prev.shape.length), corner, seg.shape.point(0.0),
-                         b.length, u1, u2)
+                         length, u1, u2)
+            b = b._replace(length=length)
             prev.length = prev.shape.length
             seg.length = seg.shape.length
         vmax = b.speed
@@ -323,9 +352,10 @@ class Planner:
             if seg.term != TANGENT:
                 v = 0.0
             else:
-                a = nxt.accel * nxt.reduce
-                if nxt.term == PARABOLIC:
-                    a *= 0.5
+                if nxt.term == PARABOLIC or nxt.soft:
+                    a = nxt.half * nxt.reduce
+                else:
+                    a = nxt.accel * nxt.reduce
                 v = math.sqrt(nxt.vfinal * nxt.vfinal + 2.0 * a * nxt.length)
                 if v > seg.vend:
                     v = seg.vend
@@ -343,9 +373,7 @@ class Planner:
     # -- running ------------------------------------------------------------------------------
     def _run(self, seg: Segment) -> None:
         term = seg.term
-        a = seg.accel * seg.reduce
-        if term == PARABOLIC:
-            a *= 0.5
+        a = (seg.half if term == PARABOLIC or seg.soft else seg.accel) * seg.reduce
         vin = self.vnow
         t, vout, peak = profile_time(vin, seg.vfinal, seg.vmax, a, seg.length)
         seg.vin = vin
@@ -411,7 +439,19 @@ def parabolic_overlap(seg: Segment, a1: float, peak: float, nxt: Segment) -> flo
         # within the tolerance
         half = 0.5 * angle_between(seg.end_dir, nxt.start_dir)
         if half > 1e-9:
-            vb = min(vb, math.sqrt(4.0 * min(a1, a2) * seg.tolerance / math.sin(half)))
+            # the ramp, vb² / (2·a1) long, stays within the reach of a corner blend (where a
+            # line meets an arc, counted with half its radius); two arcs curve alike and count
+            # as straight here
+            r1, r2 = radius_of(seg.shape), radius_of(nxt.shape)
+            r = 0.5 * min(r1, r2) if r1 == math.inf or r2 == math.inf else math.inf
+            vb = min(vb, math.sqrt(2.0 * a1 * corner_reach(2.0 * half, seg.tolerance, r)))
+        # next to an arc of radius r (acceleration a in its plane), whatever the kink, the blend
+        # is kept to 2·a·√(P·r) / v, v the faster move's speed
+        for other in (seg, nxt):
+            shape = other.shape.base if isinstance(other.shape, Piece) else other.shape
+            if isinstance(shape, Arc) and other.kind == ARC:
+                v = max(seg.vmax, nxt.vmax)
+                vb = min(vb, 8.0 * other.half * math.sqrt(seg.tolerance * shape.radius) / v)
     return vb / a1
 
 

@@ -20,7 +20,7 @@ from typing import Any
 
 from ..canon import ops
 from .geometry import Line, Pos, arc_from_canon
-from .lookahead import ARC, EXACT, FEED, PARABOLIC, RAPID, STOP, Planner, Segment
+from .lookahead import ARC, EXACT, FEED, PARABOLIC, RAPID, SQRT3_2, STOP, Planner, Segment
 from .machine import Machine
 
 MM_PER_INCH = 25.4
@@ -373,12 +373,28 @@ class PathSink:
         amax = length / ta if ta > 0 else math.inf
         if self.vcap is not None:
             vmax = min(vmax, self.vcap)
+        accel = 0.5 * amax
         if ap < math.inf and shape.radius > 0:
-            vmax = min(vmax, math.sqrt(0.5 * math.sqrt(3.0) * ap * shape.radius))
+            # the speed in the plane keeps the centripetal acceleration within √3/2 of it
+            vmax = min(vmax, math.sqrt(SQRT3_2 * ap * shape.radius)
+                       * (length / circ if circ > 1e-12 else 1.0))
+            if rise > 1e-12 and amax < math.inf:
+                # a helix: the normal share shrinks with (rise / radius)², the tangential
+                # acceleration takes the rest
+                q = rise / shape.radius
+                a_n = SQRT3_2 * ap / (1.0 + q * q)
+                if a_n < amax:
+                    accel = max(accel, math.sqrt(amax * amax - a_n * a_n))
         speed = min(self.fspeed, vmax)
         naive = length / speed if speed > 0 else math.inf
-        seg = Segment(ARC, line, self.tool, shape, speed, 0.5 * amax, self.mode,
+        seg = Segment(ARC, line, self.tool, shape, speed, accel, self.mode,
                       self.tolerance, naive)
+        seg.half = 0.25 * amax  # next to a parabolic blend
+        if ap < math.inf and shape.radius > 0:
+            # next to a parabolic blend the centripetal share is halved; a helix counts with
+            # the radius r·(1 + (rise / r)²)
+            q = rise / shape.radius
+            seg.vsoft = math.sqrt(0.5 * SQRT3_2 * ap * shape.radius * (1.0 + q * q))
         self.planner.add(seg)
 
     # -- standstills --------------------------------------------------------------------------

@@ -1,0 +1,200 @@
+"""Joins with an arc or a helix, as LinuxCNC 2.9's planner makes them (measured; see
+``docs/planner.md``): which joins are rounded, how fast a corner blend beside an arc may run, and
+where the blend circle touches a line or an arc in the same plane.
+
+A helix is never rounded: a kinked join with one is a parabolic blend.  Under G64 without P a
+corner between a line and an arc, or two arcs, in one plane is rounded too.  The blend is a circle
+tangent to both moves; it touches an arc on the inside when the arc curves into the corner and on
+the outside otherwise, so it takes different lengths from the two moves.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+from .geometry import Arc, Line, Piece, Vec
+
+if TYPE_CHECKING:
+    from .lookahead import Segment, Shape
+
+
+def helical(shape: Shape) -> bool:
+    """Whether ``shape`` is (part of) a helix: an arc that rises along its plane's normal."""
+    if isinstance(shape, Piece):
+        shape = shape.base
+    return isinstance(shape, Arc) and abs(shape.rise) > 1e-12
+
+
+def coplanar(a: Shape, b: Shape) -> bool:
+    """Whether two moves, one of them an arc, lie in one plane."""
+    if isinstance(a, Piece):
+        a = a.base
+    if isinstance(b, Piece):
+        b = b.base
+    arc, other = (a, b) if isinstance(a, Arc) else (b, a)
+    if not isinstance(arc, Arc):
+        return False
+    n = arc.normal
+    p: Sequence[float]
+    q: Sequence[float]
+    if isinstance(other, Arc):
+        m = other.normal
+        cross = (n[1] * m[2] - n[2] * m[1], n[2] * m[0] - n[0] * m[2], n[0] * m[1] - n[1] * m[0])
+        if max(abs(c) for c in cross) > 1e-9:
+            return False
+        p, q = arc.center, other.center
+    elif isinstance(other, Line):
+        p, q = arc.center, other.start
+        d = ((other.end[0] - q[0]) * n[0] + (other.end[1] - q[1]) * n[1]
+             + (other.end[2] - q[2]) * n[2])
+        if abs(d) > 1e-9:
+            return False
+    else:
+        return False
+    return abs((q[0] - p[0]) * n[0] + (q[1] - p[1]) * n[1] + (q[2] - p[2]) * n[2]) < 1e-9
+
+
+def arc_blend_cap(prev: Segment, seg: Segment, theta: float, a: float) -> float:
+    """The greatest speed of a corner blend next to an arc (radius r, acceleration a in the
+    corner's plane): an arc that curves into the corner, with s = sin(θ/2), lets it run at
+    √(0.65·a·r·(1 - s)/(1 + s)); one that curves away from it and follows the blend at
+    √(π/(2√3)·a·r)."""
+    cap = math.inf
+    u1, u2 = prev.end_dir, seg.start_dir
+    turn = (u1[1] * u2[2] - u1[2] * u2[1], u1[2] * u2[0] - u1[0] * u2[2],
+            u1[0] * u2[1] - u1[1] * u2[0])
+    s = math.sin(0.5 * theta)
+    for shape, at_end in ((prev.shape, True), (seg.shape, False)):
+        base = shape.base if isinstance(shape, Piece) else shape
+        if not isinstance(base, Arc):
+            continue
+        r = base.radius
+        p = shape.point(shape.length if at_end else 0.0)
+        t = u1 if at_end else u2
+        c = base.center
+        w = (c[0] - p[0], c[1] - p[1], c[2] - p[2])
+        bend = (t[1] * w[2] - t[2] * w[1], t[2] * w[0] - t[0] * w[2], t[0] * w[1] - t[1] * w[0])
+        same = turn[0] * bend[0] + turn[1] * bend[1] + turn[2] * bend[2] > 0.0
+        if same:
+            cap = min(cap, math.sqrt(0.65 * a * r * (1.0 - s) / (1.0 + s)))
+        elif not at_end:
+            cap = min(cap, math.sqrt(math.pi / (2.0 * math.sqrt(3.0)) * a * r))
+    return cap
+
+
+def arc_side(prev: Segment, seg: Segment) -> tuple[Arc, bool, bool] | None:
+    """The arc of a line-arc join, whether it comes first, and whether it curves the way the
+    corner turns."""
+    u1, u2 = prev.end_dir, seg.start_dir
+    turn = (u1[1] * u2[2] - u1[2] * u2[1], u1[2] * u2[0] - u1[0] * u2[2],
+            u1[0] * u2[1] - u1[1] * u2[0])
+    for shape, at_end in ((prev.shape, True), (seg.shape, False)):
+        base = shape.base if isinstance(shape, Piece) else shape
+        if not isinstance(base, Arc):
+            continue
+        p = shape.point(shape.length if at_end else 0.0)
+        t = u1 if at_end else u2
+        c = base.center
+        w = (c[0] - p[0], c[1] - p[1], c[2] - p[2])
+        bend = (t[1] * w[2] - t[2] * w[1], t[2] * w[0] - t[0] * w[2], t[0] * w[1] - t[1] * w[0])
+        return base, at_end, turn[0] * bend[0] + turn[1] * bend[1] + turn[2] * bend[2] > 0.0
+    return None
+
+
+def line_arc_fit(prev: Segment, seg: Segment, theta: float, radius: float, room: float,
+                 speed: float, normal: float) -> tuple[float, float, float] | None:
+    """How much a blend circle of ``radius`` tangent to both a line and an arc (in one plane)
+    takes from ``prev`` and from ``seg``, and its length; the radius shrinks until neither
+    gives more than ``room``."""
+    side = arc_side(prev, seg)
+    if side is None:
+        return None
+    arc, arc_first, same = side
+    if same:  # the radius that lets the speed through, no longer
+        radius = min(radius, speed * speed / normal)
+    r = arc.radius
+    sin_t, cos_t = math.sin(theta), math.cos(theta)
+    # the line runs along +x into the join at the origin, the arc leaves it turning left by
+    # theta (an arc before the join is the mirror image of one after it)
+    if same:
+        cx, cy, dist = -r * sin_t, r * cos_t, -1.0
+    else:
+        cx, cy, dist = r * sin_t, -r * cos_t, 1.0
+    big = radius
+    for _ in range(40):
+        dd = (r + dist * big) ** 2 - (big - cy) ** 2
+        if (big < r or dist > 0.0) and dd >= 0.0:
+            x = -cx - math.sqrt(dd) if same else -cx + math.sqrt(dd)
+            bx, by = -x, big
+            a0 = math.atan2(-cy, -cx)
+            a1 = math.atan2(by - cy, bx - cx)
+            phi = abs(math.remainder(a1 - a0, 2.0 * math.pi))
+            take = r * phi
+            if 0.0 <= x <= room and take <= room:
+                turn = theta + phi if same else theta - phi
+                length = big * max(turn, 0.0)
+                return (take, x, length) if arc_first else (x, take, length)
+        big *= 0.8
+    return None
+
+
+def arc_arc_fit(prev: Segment, seg: Segment, theta: float, radius: float, room: float,
+                speed: float, normal: float) -> tuple[float, float, float] | None:
+    """As :func:`line_arc_fit`, for two arcs in one plane."""
+    a1 = prev.shape.base if isinstance(prev.shape, Piece) else prev.shape
+    a2 = seg.shape.base if isinstance(seg.shape, Piece) else seg.shape
+    if not isinstance(a1, Arc) or not isinstance(a2, Arc):
+        return None
+    u1, u2 = prev.end_dir, seg.start_dir
+    cos_t = u1[0] * u2[0] + u1[1] * u2[1] + u1[2] * u2[2]
+    ey = (u2[0] - cos_t * u1[0], u2[1] - cos_t * u1[1], u2[2] - cos_t * u1[2])
+    n = math.sqrt(ey[0] ** 2 + ey[1] ** 2 + ey[2] ** 2)
+    if n < 1e-12:
+        return None
+    ey = (ey[0] / n, ey[1] / n, ey[2] / n)
+    p = prev.shape.point(prev.shape.length)
+
+    def local(c: Vec) -> tuple[float, float]:
+        w = (c[0] - p[0], c[1] - p[1], c[2] - p[2])
+        return (w[0] * u1[0] + w[1] * u1[1] + w[2] * u1[2],
+                w[0] * ey[0] + w[1] * ey[1] + w[2] * ey[2])
+
+    c1, c2 = local(a1.center), local(a2.center)
+    r1, r2 = a1.radius, a2.radius
+    st, ct = math.sin(theta), math.cos(theta)
+    same1 = c1[1] > 0.0  # curves into the corner
+    same2 = -st * c2[0] + ct * c2[1] > 0.0
+    if same1 or same2:
+        radius = min(radius, speed * speed / normal)
+    big = radius
+    for _ in range(40):
+        d1 = r1 - big if same1 else r1 + big
+        d2 = r2 - big if same2 else r2 + big
+        dx, dy = c2[0] - c1[0], c2[1] - c1[1]
+        d = math.hypot(dx, dy)
+        if d1 > 0.0 and d2 > 0.0 and d > 1e-12:
+            a = (d1 * d1 - d2 * d2 + d * d) / (2.0 * d)
+            h2 = d1 * d1 - a * a
+            if h2 >= 0.0:
+                h = math.sqrt(h2)
+                mx, my = c1[0] + a * dx / d, c1[1] + a * dy / d
+                best = None
+                for sgn in (1.0, -1.0):
+                    bx, by = mx - sgn * h * dy / d, my + sgn * h * dx / d
+                    if by > 0.0 and (best is None or bx * bx + by * by < best[0]):
+                        best = (bx * bx + by * by, bx, by)
+                if best is not None:
+                    _, bx, by = best
+                    phi1 = abs(math.remainder(math.atan2(by - c1[1], bx - c1[0])
+                                              - math.atan2(-c1[1], -c1[0]), 2.0 * math.pi))
+                    phi2 = abs(math.remainder(math.atan2(by - c2[1], bx - c2[0])
+                                              - math.atan2(-c2[1], -c2[0]), 2.0 * math.pi))
+                    take1, take2 = r1 * phi1, r2 * phi2
+                    if take1 <= room and take2 <= room:
+                        turn = (theta + (phi1 if same1 else -phi1)
+                                + (phi2 if same2 else -phi2))
+                        return take1, take2, big * max(turn, 0.0)
+        big *= 0.8
+    return None
