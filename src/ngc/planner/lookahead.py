@@ -280,9 +280,16 @@ class Planner:
                         vlim = lim[1] / comp
         if self.vcap is not None and self.vcap < vlim:
             vlim = self.vcap
-        goal = min(max(prev.vmax, seg.vmax), vlim)
-        room = 0.5 * min(prev.full_length, seg.full_length, 2.0 * prev.length,
-                         2.0 * seg.length)
+        goal = prev.vmax if prev.vmax > seg.vmax else seg.vmax
+        if vlim < goal:
+            goal = vlim
+        # each move gives at most half its programmed length, and what it has left
+        room = 0.5 * (prev.full_length if prev.full_length < seg.full_length
+                      else seg.full_length)
+        if prev.length < room:
+            room = prev.length
+        if seg.length < room:
+            room = seg.length
         pl, sl = prev.shape, seg.shape
         lines = isinstance(pl, Line) and isinstance(sl, Line)
         if not lines and prev.tolerance > 0.0:

@@ -149,7 +149,11 @@ class Timer:
                 seconds[line] += share * length
                 seen[line] = 1
         else:
-            by_line.add(seg.line, t)
+            line = seg.line
+            if line >= len(by_line.seen):
+                by_line.grow(line)
+            by_line.seconds[line] += t
+            by_line.seen[line] = 1
         if seg.naive != math.inf:
             r.naive_s += seg.naive
         r.segments += 1
