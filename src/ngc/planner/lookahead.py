@@ -382,7 +382,11 @@ class Planner:
         term = seg.term
         a = (seg.half if term == PARABOLIC or seg.soft else seg.accel) * seg.reduce
         vin = self.vnow
-        t, vout, peak = profile_time(vin, seg.vfinal, seg.vmax, a, seg.length)
+        vmax = seg.vmax
+        if vin == vmax and seg.vfinal == vmax and vmax > 0.0:  # cruise: most moves of a run
+            t, vout, peak = seg.length / vmax, vmax, vmax
+        else:
+            t, vout, peak = profile_time(vin, seg.vfinal, vmax, a, seg.length)
         seg.vin = vin
         seg.vout = vout
         seg.peak = peak

@@ -223,21 +223,6 @@ class PathSink:
                 op[5] + g9[5] + g5[5] + t[5])
 
     # -- limits -------------------------------------------------------------------------------
-    def line_limits(self, delta: Sequence[float], length: float) -> tuple[float, float]:
-        """The speed and acceleration a straight move of ``delta`` (per axis) and ``length`` can
-        have: no axis may exceed its own limits."""
-        tv = ta = 0.0
-        for i, inv in self.inv_limits:
-            d = abs(delta[i])
-            if d > 1e-12:
-                if d * inv[0] > tv:
-                    tv = d * inv[0]
-                if d * inv[1] > ta:
-                    ta = d * inv[1]
-        if tv <= 0.0:
-            return math.inf, math.inf
-        return length / tv, length / ta
-
     # -- moves --------------------------------------------------------------------------------
     def straight(self, end: Pos, line: int, feed: bool) -> None:
         if feed and self.merging:
@@ -307,7 +292,21 @@ class PathSink:
             length = math.sqrt(da * da + db * db + dc * dc)
             if length < 1e-9:
                 return
-        vmax, amax = self.line_limits((dx, dy, dz, da, db, dc), length)
+        # no axis may exceed its own limits: the time each axis needs at its speed and at its
+        # acceleration, the longest of them over the length
+        delta = (dx, dy, dz, da, db, dc)
+        tv = ta = 0.0
+        for i, inv in self.inv_limits:
+            d = abs(delta[i])
+            if d > 1e-12:
+                if d * inv[0] > tv:
+                    tv = d * inv[0]
+                if d * inv[1] > ta:
+                    ta = d * inv[1]
+        if tv > 0.0:
+            vmax, amax = length / tv, length / ta
+        else:
+            vmax = amax = math.inf
         if self.vcap is not None and self.vcap < vmax:
             vmax = self.vcap
         if feed:
