@@ -35,7 +35,6 @@ MEDIAN_TOLERANCE = 0.005
 
 # Programs whose estimate is currently more than 1 % off (relative error, for the record).
 OVER_CASES: dict[str, float] = {
-    "19_engrave.ngc": -0.0127,  # tight loops of merged 0.05 mm chords
 }
 OVER_SHARED: dict[str, float] = {}
 

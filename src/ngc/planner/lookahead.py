@@ -65,6 +65,8 @@ class Segment:
         "parts",
         "parts_length",
         "peak",
+        "ramp",
+        "ramp_in",
         "reduce",
         "shape",
         "soft",
@@ -121,6 +123,8 @@ class Segment:
         self.parts_length = 0.0
         self.cut0 = 0.0  # how much of a line's start and end blends have taken (path())
         self.cut1 = 0.0
+        self.ramp_in = False  # a line that starts with a corner blend
+        self.ramp = False  # a line between two corner blends: it may run as a ramp (ramp_time)
 
     def path(self) -> Shape:
         """The shape this segment runs along: a line without the parts corner blends took."""
@@ -342,6 +346,16 @@ class Planner:
         prev.term = TANGENT
         prev.vend = vmax
         blend.vend = vmax
+        if isinstance(seg.shape, Line) and isinstance(prev.shape, Line):
+            seg.ramp_in = True
+            if prev.ramp_in:
+                if prev.length < MERGE_TIME * vmax:
+                    # so short a line between two blends runs as part of the second one
+                    prev.vmax = vmax  # the blend's, even above the line's own feed
+                    prev.accel = min(prev.accel, 0.5 * amax)
+                    prev.half = min(prev.half, 0.5 * amax)
+                else:
+                    prev.ramp = True
         # the blend goes between prev and seg
         self.queue.append(blend)
         return blend
@@ -387,6 +401,8 @@ class Planner:
             t, vout, peak = seg.length / vmax, vmax, vmax
         else:
             t, vout, peak = profile_time(vin, seg.vfinal, vmax, a, seg.length)
+            if seg.ramp:
+                t, vout, peak = ramp_time(vin, seg.vfinal, a, seg.length, (t, vout, peak))
         seg.vin = vin
         seg.vout = vout
         seg.peak = peak
@@ -464,6 +480,27 @@ def parabolic_overlap(seg: Segment, a1: float, peak: float, nxt: Segment) -> flo
                 v = max(seg.vmax, nxt.vmax)
                 vb = min(vb, 8.0 * other.half * math.sqrt(seg.tolerance * shape.radius) / v)
     return vb / a1
+
+
+RAMP_TIME = 0.01098  # s: a line between two corner blends run in less than this is a ramp
+MERGE_TIME = 0.00385  # s: a line between two corner blends shorter than the second one runs in
+# this time joins it
+
+
+def ramp_time(v0: float, v1: float, a: float, length: float,
+              trapezoid: tuple[float, float, float]) -> tuple[float, float, float]:
+    """A line cut by corner blends at both ends that takes less than RAMP_TIME goes straight
+    from its start speed to its end speed (at most what its acceleration ``a`` reaches) with no
+    peak in between; a longer one keeps its ``trapezoid``."""
+    reach = math.sqrt(v0 * v0 + 2.0 * a * length)
+    if v1 > reach:
+        v1 = reach
+    if v0 + v1 <= 0.0:
+        return trapezoid
+    t = 2.0 * length / (v0 + v1)
+    if t >= RAMP_TIME:
+        return trapezoid
+    return t, v1, max(v0, v1)
 
 
 def both_lines(prev: Segment, seg: Segment) -> bool:
