@@ -9,6 +9,8 @@ between two lines.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
+from itertools import pairwise
 from typing import NamedTuple
 
 Vec = tuple[float, float, float]
@@ -291,3 +293,72 @@ class BlendArc(NamedTuple):
 
     def end_direction(self) -> Vec:
         return self.u2
+
+
+def nurbs_point(points: Sequence[tuple[float, float]], weights: Sequence[float],
+                knots: Sequence[float], order: int, u: float) -> tuple[float, float]:
+    """The point of the NURBS curve at parameter ``u`` (de Boor's algorithm on the weighted
+    control points)."""
+    n = len(points)
+    degree = order - 1
+    k = degree
+    while k < n - 1 and knots[k + 1] <= u:
+        k += 1
+    d = [(points[j][0] * weights[j], points[j][1] * weights[j], weights[j])
+         for j in range(k - degree, k + 1)]
+    for r in range(1, degree + 1):
+        for j in range(degree, r - 1, -1):
+            i = j + k - degree
+            span = knots[i + degree - r + 1] - knots[i]
+            t = (u - knots[i]) / span if span > 0.0 else 0.0
+            a, b = d[j - 1], d[j]
+            d[j] = (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2]))
+    x, y, w = d[degree]
+    return (x / w, y / w) if w != 0.0 else (x, y)
+
+
+def nurbs_polyline(points: Sequence[tuple[float, float]], weights: Sequence[float],
+                   knots: Sequence[float], order: int,
+                   tolerance: float) -> list[tuple[float, float]]:
+    """Points along a NURBS curve, after its start and up to its end, such that the straight
+    lines between them stay within about ``tolerance`` of the curve (each span is halved until
+    the curve's point halfway is that close to the chord).
+
+    >>> pts = nurbs_polyline([(0, 0), (1, 1), (2, 0)], [1, 1, 1], [0, 0, 0, 1, 1, 1], 3, 0.01)
+    >>> pts[-1], len(pts)
+    ((2.0, 0.0), 8)
+    """
+    if len(points) < 2 or order < 2:
+        return [tuple(points[-1])] if points else []  # type: ignore[list-item]
+    lo, hi = knots[order - 1], knots[len(points)]
+    out: list[tuple[float, float]] = []
+
+    def chord(u0: float, p0: tuple[float, float], u1: float, p1: tuple[float, float],
+              depth: int) -> None:
+        um = 0.5 * (u0 + u1)
+        pm = nurbs_point(points, weights, knots, order, um)
+        dx, dy = p1[0] - p0[0], p1[1] - p0[1]
+        length = math.hypot(dx, dy)
+        if length > 0.0:
+            off = abs((pm[0] - p0[0]) * dy - (pm[1] - p0[1]) * dx) / length
+        else:
+            off = math.hypot(pm[0] - p0[0], pm[1] - p0[1])
+        if depth < 16 and off > tolerance:
+            chord(u0, p0, um, pm, depth + 1)
+            chord(um, pm, u1, p1, depth + 1)
+        else:
+            out.append(p1)
+
+    spans = sorted(set(knots[order - 1:len(points) + 1]))
+    start = nurbs_point(points, weights, knots, order, lo)
+    for u0, u1 in pairwise(spans):
+        if u1 > u0:
+            # a span is cut in four at least: a curve can come back to its chord halfway
+            steps = [u0 + (u1 - u0) * i / 4.0 for i in range(5)]
+            for a, b in pairwise(steps):
+                end = nurbs_point(points, weights, knots, order, b) if b < hi else \
+                    (float(points[-1][0]), float(points[-1][1]))
+                chord(a, start, b, end, 0)
+                start = end
+    return out
+

@@ -19,11 +19,13 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from ..canon import ops
-from .geometry import Line, Pos, arc_from_canon
+from ..errors import NgcError
+from .geometry import Line, Pos, arc_from_canon, nurbs_polyline
 from .lookahead import ARC, EXACT, FEED, PARABOLIC, RAPID, SQRT3_2, STOP, Planner, Segment
 from .machine import Machine
 
 MM_PER_INCH = 25.4
+NURBS_TOLERANCE = 0.001  # machine units: how close the lines that run a NURBS curve stay to it
 
 _new = tuple.__new__  # a NamedTuple made without its Python __new__
 AXES6 = "XYZABC"
@@ -65,11 +67,15 @@ class PathSink:
         self.per_rev = False
         self.rpm = 0.0
         self.fspeed = 0.0  # the programmed feed in machine units per second
+        self.css_max = 0.0  # G96: the spindle's greatest speed (rpm); 0: G97, S in rpm
+        self.sync = 0.0  # G33, G33.1, G76: program units per revolution; 0: not synchronised
+        self.inch_program = self.inch_machine  # the program's units are inches
         self.mode = EXACT  # until the program's first SET_MOTION_CONTROL_MODE
         self.tolerance = 0.0  # machine units; 0: none
         self.naive_tol = 0.0  # machine units
         self.naive_tol2 = 0.0  # its square
         self.merging = False  # G64 P… Q…: straight feeds go through the naive-CAM chain
+        self.per_move = False  # the feed is worked out for each move (feed_at)
         self.tool = 0
         self.selected = 0
         self.spindle_on = False
@@ -99,6 +105,8 @@ class PathSink:
             self.straight(self.to_machine(op), line, feed=False)  # type: ignore[arg-type]
         elif kind is ops.ArcFeed:
             self.arc(op, line)  # type: ignore[arg-type]
+        elif kind is ops.NurbsFeed:
+            self.nurbs(op, line)  # type: ignore[arg-type]
         elif kind is ops.SetFeedRate:
             self.feed = op.rate  # type: ignore[attr-defined]
             self._feed_changed()
@@ -110,23 +118,37 @@ class PathSink:
             self._feed_changed()
             if self.spindle_on:
                 self.wait("spindle", self.machine.spindle_start_time, line)
+        elif kind is ops.SetSpindleMode:
+            self.css_max = op.css_max  # type: ignore[attr-defined]
+            self._feed_changed()
+        elif kind is ops.StartSpeedFeedSync:
+            self.flush_chain()
+            self.sync = op.per_rev  # type: ignore[attr-defined]
+            self._feed_changed()
+        elif kind is ops.StopSpeedFeedSynch:
+            self.flush_chain()
+            self.sync = 0.0
+            self._feed_changed()
+        elif kind is ops.RigidTap:
+            self.rigid_tap(op, line)  # type: ignore[arg-type]
         elif kind is ops.SetMotionControlMode:
             self.flush_chain()
             self.mode = STOP if op.mode == "CANON_EXACT_STOP" else EXACT  # type: ignore[attr-defined]
             self.tolerance = 0.0
-            self.merging = False
+            self._feed_changed()
         elif kind is ops.SetMotionControlContinuous:
             self.flush_chain()
             self.mode = PARABOLIC
             self.tolerance = op.tolerance * self.scale  # type: ignore[attr-defined]
-            self.merging = self.naive_tol > 0.0
+            self._feed_changed()
         elif kind is ops.SetNaivecamTolerance:
             self.flush_chain()
             self.naive_tol = op.tolerance * self.scale  # type: ignore[attr-defined]
             self.naive_tol2 = self.naive_tol * self.naive_tol
-            self.merging = self.mode == PARABOLIC and self.naive_tol > 0.0
+            self._feed_changed()
         elif kind is ops.UseLengthUnits:
             inch = op.units == "CANON_UNITS_INCHES"  # type: ignore[attr-defined]
+            self.inch_program = inch
             if inch == self.inch_machine:
                 self.scale = 1.0
             else:
@@ -165,7 +187,7 @@ class PathSink:
             was = self.spindle_on
             self.spindle_on = False
             self.wait("spindle", self.machine.spindle_stop_time if was else 0.0, line)
-        elif kind in WAITS or kind is ops.StraightProbe or kind is ops.RigidTap:
+        elif kind in WAITS or kind is ops.StraightProbe:
             self.wait("wait", 0.0, line)
         elif kind is ops.ProgramEnd:
             self.flush_chain()
@@ -204,8 +226,28 @@ class PathSink:
         self.identity = self.scale == 1.0 and not self.rot and not any(self.shift)
 
     def _feed_changed(self) -> None:
+        """The feed in machine units per second, where it is the same for every move; else
+        (G96 with a feed per revolution, or a spindle-synchronised move) it is worked out for
+        each move (``feed_at``)."""
         rate = self.feed * (self.rpm if self.per_rev else 1.0)
         self.fspeed = rate * self.scale / 60.0
+        self.per_move = self.sync > 0.0 or (self.per_rev and self.css_max > 0.0)
+        self.merging = (self.mode == PARABOLIC and self.naive_tol > 0.0
+                        and not self.per_move)
+
+    def feed_at(self, start: Pos, end: Pos) -> float:
+        """The feed, in machine units per second, of a move from ``start`` to ``end`` that goes
+        with the spindle: synchronised (G33: its units per revolution) or per revolution (G95),
+        at the spindle's speed; under G96 that speed follows the distance from the X axis of the
+        program's coordinates in the middle of the move, up to G96's D."""
+        rpm = self.rpm
+        if self.css_max > 0.0:
+            radius = abs(0.5 * (start[0] + end[0]) - self.shift[0]) / self.scale
+            surface = rpm * (12.0 if self.inch_program else 1000.0)  # per minute, program units
+            circle = 2.0 * math.pi * radius
+            rpm = self.css_max if circle * self.css_max <= surface else surface / circle
+        per_rev = self.sync if self.sync > 0.0 else self.feed
+        return per_rev * rpm * self.scale / 60.0
 
     def to_machine(self, op: Sequence[float]) -> Pos:
         s = self.scale
@@ -310,15 +352,16 @@ class PathSink:
         if self.vcap is not None and self.vcap < vmax:
             vmax = self.vcap
         if feed:
-            f = self.chain_feed if parts else self.fspeed
+            if parts:
+                f = self.chain_feed
+            else:
+                f = self.feed_at(start, end) if self.per_move else self.fspeed
             speed = f if f < vmax else vmax
         else:
             speed = vmax
-        if speed > 0.0:
-            naive = length / speed
-        else:
-            naive = math.inf
-            speed = 1e-9
+        if not speed > 0.0:
+            raise NoSpeed(line)
+        naive = length / speed
         u = (dx / length, dy / length, dz / length)
         shape = _new(Line, (start, end, length))
         seg = Segment(FEED if feed else RAPID, line, self.tool, shape, speed, amax, self.mode,
@@ -384,8 +427,10 @@ class PathSink:
                 a_n = SQRT3_2 * ap / (1.0 + q * q)
                 if a_n < amax:
                     accel = max(accel, math.sqrt(amax * amax - a_n * a_n))
-        speed = min(self.fspeed, vmax)
-        naive = length / speed if speed > 0 else math.inf
+        speed = min(self.feed_at(start, end) if self.per_move else self.fspeed, vmax)
+        if not speed > 0.0:
+            raise NoSpeed(line)
+        naive = length / speed
         seg = Segment(ARC, line, self.tool, shape, speed, accel, self.mode,
                       self.tolerance, naive)
         seg.half = 0.25 * amax  # next to a parabolic blend
@@ -396,6 +441,29 @@ class PathSink:
             seg.vsoft = math.sqrt(0.5 * SQRT3_2 * ap * shape.radius * (1.0 + q * q))
         self.planner.add(seg)
 
+    def nurbs(self, op: ops.NurbsFeed, line: int) -> None:
+        """G5, G5.1, G5.2: the curve in the XY plane run as straight feeds within NURBS_TOLERANCE
+        of it (a chain of short lines, joined as any other)."""
+        z, abc = self.pos[2], self.pos[3:]
+        for x, y in nurbs_polyline(op.points, op.weights, op.knots, op.order, NURBS_TOLERANCE):
+            p = self.to_machine((x, y, 0.0, 0.0, 0.0, 0.0))
+            self.straight((p[0], p[1], z, abc[0], abc[1], abc[2]), line, True)
+
+    def rigid_tap(self, op: ops.RigidTap, line: int) -> None:
+        """G33.1: synchronised to the point and back, stopping at the bottom (the spindle's
+        reversal itself takes no time here)."""
+        self.flush_chain()
+        self.planner.stop()
+        start = self.pos
+        bottom = self.to_machine((op.x, op.y, op.z, 0.0, 0.0, 0.0))
+        bottom = (bottom[0], bottom[1], bottom[2], start[3], start[4], start[5])
+        mode = self.mode
+        self.mode = STOP
+        self.line_to(start, bottom, line, True)
+        self.line_to(bottom, start, line, True)
+        self.mode = mode
+        self.planner.stop()
+
     # -- standstills --------------------------------------------------------------------------
     def wait(self, kind: str, seconds: float, line: int) -> None:
         self.flush_chain()
@@ -403,5 +471,10 @@ class PathSink:
         self.on_wait(kind, seconds, line)
 
 
-def _dist(p: Pos, q: Pos) -> float:
-    return math.sqrt((q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2 + (q[2] - p[2]) ** 2)
+class NoSpeed(NgcError):
+    """A feed that cannot move: its feed works out to 0 (the interpreter refuses such moves)."""
+
+    def __init__(self, line: int) -> None:
+        super().__init__("ngc time: the move has no speed (its feed works out to 0)", line=line)
+
+
