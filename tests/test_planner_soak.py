@@ -101,3 +101,11 @@ def main(argv: list[str] | None = None) -> int:
 
 if __name__ == "__main__":
     sys.exit(main())
+
+
+def test_an_xz_arc_under_an_xy_rotation_turns_with_the_plane() -> None:
+    # (comp seed 153) the rotation turns the arc's normal (program Y) in the machine's XY plane
+    text = ("G21 G90\nG10 L2 P0 R-87.79\nG54 G18\nG0 X12.3912 Y-4.692 Z12.1329\n"
+            "G1 X13.0449 Z10.2789 F1200\nG3 Z6.6258 X1.2647 K26.1167 I-14.5555\nG1 X-8 Z6\n"
+            "M2\n")
+    assert check(text) is None

@@ -382,6 +382,9 @@ class PathSink:
         c = self.to_machine(centre)
         normal = [0.0, 0.0, 0.0]
         normal[pn] = 1.0
+        if self.rot:  # the XY rotation turns the normal of an XZ or YZ arc with the plane
+            normal[0], normal[1] = (normal[0] * self.cos_r - normal[1] * self.sin_r,
+                                    normal[0] * self.sin_r + normal[1] * self.cos_r)
         start = self.pos
         shape = arc_from_canon(start, end, (c[0], c[1], c[2]),
                                (normal[0], normal[1], normal[2]), op.rotation)
