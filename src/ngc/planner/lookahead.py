@@ -247,7 +247,7 @@ class Planner:
         # blend mode: a corner is rounded by an arc where it can be (arcjoin), else it keeps a
         # parabolic blend
         if self.machine.arc_blend_enable and prev.kind != BLEND:
-            if both_lines(prev, seg):
+            if isinstance(prev.shape, Line) and isinstance(seg.shape, Line):
                 if self._blend(prev, seg, theta) is None:
                     prev.term = STOP
                 return
@@ -346,7 +346,7 @@ class Planner:
         prev.term = TANGENT
         prev.vend = vmax
         blend.vend = vmax
-        if isinstance(seg.shape, Line) and isinstance(prev.shape, Line):
+        if lines:
             seg.ramp_in = True
             if prev.ramp_in:
                 if prev.length < MERGE_TIME * vmax:
@@ -501,12 +501,6 @@ def ramp_time(v0: float, v1: float, a: float, length: float,
     if t >= RAMP_TIME:
         return trapezoid
     return t, v1, max(v0, v1)
-
-
-def both_lines(prev: Segment, seg: Segment) -> bool:
-    return isinstance(prev.shape, Line) and isinstance(seg.shape, Line)
-
-
 def _trimmed(shape: Shape, s0: float, length: float) -> Shape:
     """``shape`` from path length ``s0`` on, ``length`` long."""
     if isinstance(shape, Line):
