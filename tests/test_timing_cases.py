@@ -22,6 +22,7 @@ import importlib.util
 import json
 import statistics
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -98,7 +99,27 @@ def _generator() -> Any:
     return module
 
 
-# -- the generated cases ---------------------------------------------------------------------------
+# -- the sets -------------------------------------------------------------------------------------
+
+
+def _what_cases() -> dict[str, str]:
+    return {c.file: c.what for c in _generator().CASES}
+
+
+def _what_shared() -> dict[str, str]:
+    return {e["file"]: ", ".join(e.get("kinds", [])) for e in _reference(SHARED)}
+
+
+def _what_joins() -> dict[str, str]:
+    return {p.name: p.read_text().splitlines()[0].strip("()").lower() for p in JOINS.glob("*.ngc")}
+
+
+# name: (folder, programs known to be over 1 %, what each program exercises)
+SETS: dict[str, tuple[Path, dict[str, float], Callable[[], dict[str, str]]]] = {
+    "cases": (CASES, OVER_CASES, _what_cases),
+    "joins": (JOINS, OVER_JOINS, _what_joins),
+    "shared": (SHARED, OVER_SHARED, _what_shared),  # no programs where ../shared is absent
+}
 
 
 def test_cases_are_what_the_generator_makes() -> None:
@@ -107,73 +128,33 @@ def test_cases_are_what_the_generator_makes() -> None:
     assert made == files
 
 
-def test_every_case_is_measured() -> None:
-    measured = {e["file"] for e in _reference(CASES)}
-    assert measured == {p.name for p in CASES.glob("[0-9]*.ngc")}
+@pytest.mark.parametrize("folder", [CASES, JOINS], ids=["cases", "joins"])
+def test_every_program_is_measured(folder: Path) -> None:
+    measured = {e["file"] for e in _reference(folder)}
+    assert measured == {p.name for p in folder.glob("[0-9]*.ngc")}
 
 
-@pytest.mark.parametrize("entry", _params(CASES, OVER_CASES))
-def test_case_within_1_percent(entry: dict[str, Any]) -> None:
-    est, err = _error(CASES, entry)
+@pytest.mark.parametrize(("folder", "entry"), [
+    pytest.param(folder, *p.values, marks=p.marks, id=f"{name}/{p.id}")
+    for name, (folder, over, _) in SETS.items() for p in _params(folder, over)])
+def test_within_1_percent(folder: Path, entry: dict[str, Any]) -> None:
+    est, err = _error(folder, entry)
     assert abs(err) <= TOLERANCE, f"{entry['file']}: ngc {est:.3f} s, LinuxCNC {entry['motion_time']:.3f} s"
 
 
-def test_cases_median_within_half_a_percent() -> None:
-    errors = [abs(_error(CASES, e)[1]) for e in _reference(CASES)]
+@pytest.mark.parametrize("name", sorted(SETS))
+def test_median_within_half_a_percent(name: str) -> None:
+    folder = SETS[name][0]
+    if not _reference(folder):
+        pytest.skip(f"{folder} is absent")
+    errors = [abs(_error(folder, e)[1]) for e in _reference(folder)]
     assert statistics.median(errors) <= MEDIAN_TOLERANCE, [f"{100 * e:.2f}" for e in errors]
 
 
-def test_cases_summary(capsys: pytest.CaptureFixture[str]) -> None:
-    what = {c.file: c.what for c in _generator().CASES}
+@pytest.mark.parametrize("name", sorted(SETS))
+def test_summary(name: str, capsys: pytest.CaptureFixture[str]) -> None:
+    folder, _, what = SETS[name]
+    if not _reference(folder):
+        pytest.skip(f"{folder} is absent")
     with capsys.disabled():
-        print(_table(CASES, what))
-
-
-# -- the shared reference set ----------------------------------------------------------------------
-
-shared = pytest.mark.skipif(not (SHARED / "reference.json").exists(), reason=f"{SHARED} is absent")
-
-
-@shared
-@pytest.mark.parametrize("entry", _params(SHARED, OVER_SHARED))
-def test_shared_within_1_percent(entry: dict[str, Any]) -> None:
-    est, err = _error(SHARED, entry)
-    assert abs(err) <= TOLERANCE, f"{entry['file']}: ngc {est:.3f} s, LinuxCNC {entry['motion_time']:.3f} s"
-
-
-@shared
-def test_shared_median_within_half_a_percent() -> None:
-    errors = [abs(_error(SHARED, e)[1]) for e in _reference(SHARED)]
-    assert statistics.median(errors) <= MEDIAN_TOLERANCE, [f"{100 * e:.2f}" for e in errors]
-
-
-@shared
-def test_shared_summary(capsys: pytest.CaptureFixture[str]) -> None:
-    what = {e["file"]: ", ".join(e.get("kinds", [])) for e in _reference(SHARED)}
-    with capsys.disabled():
-        print(_table(SHARED, what))
-
-
-# -- the joins -------------------------------------------------------------------------------------
-
-
-def test_every_join_program_is_measured() -> None:
-    measured = {e["file"] for e in _reference(JOINS)}
-    assert measured == {p.name for p in JOINS.glob("[0-9]*.ngc")}
-
-
-@pytest.mark.parametrize("entry", _params(JOINS, OVER_JOINS))
-def test_join_within_1_percent(entry: dict[str, Any]) -> None:
-    est, err = _error(JOINS, entry)
-    assert abs(err) <= TOLERANCE, f"{entry['file']}: ngc {est:.3f} s, LinuxCNC {entry['motion_time']:.3f} s"
-
-
-def test_joins_median_within_half_a_percent() -> None:
-    errors = [abs(_error(JOINS, e)[1]) for e in _reference(JOINS)]
-    assert statistics.median(errors) <= MEDIAN_TOLERANCE, [f"{100 * e:.2f}" for e in errors]
-
-
-def test_joins_summary(capsys: pytest.CaptureFixture[str]) -> None:
-    what = {p.name: p.read_text().splitlines()[0].strip("()").lower() for p in JOINS.glob("*.ngc")}
-    with capsys.disabled():
-        print(_table(JOINS, what))
+        print(_table(folder, what()))
