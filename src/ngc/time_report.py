@@ -51,7 +51,7 @@ def by_kind(result: TimeResult) -> dict[str, float]:
 
 def slowest(result: TimeResult, count: int) -> list[tuple[int, float]]:
     """The ``count`` lines that take the most time, slowest first (the earlier line on a tie)."""
-    return result.by_line.slowest(count)
+    return result.slowest(count)
 
 
 def source_lines(path: str, numbers: Iterable[int]) -> dict[int, str]:

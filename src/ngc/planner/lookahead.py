@@ -185,9 +185,9 @@ class Planner:
         # per axis X Y Z: 1 / acceleration (0: the axis has no limit)
         self.inv_accel = [1.0 / lim.max_acceleration if lim and lim.max_acceleration > 0.0
                           else 0.0 for lim in axes]
-        # per axis X Y Z: (acceleration, velocity) limits, or None
-        self.axis_limits = [(lim.max_acceleration, lim.max_velocity) if lim else None
-                            for lim in axes]
+        # per axis X Y Z: 1 / velocity (0: the axis has no limit)
+        self.inv_vel = [1.0 / lim.max_velocity if lim and lim.max_velocity > 0.0 else 0.0
+                        for lim in axes]
         self.vcap = machine.max_linear_velocity
         self.queue: deque[Segment] = deque()
         self.done = done
@@ -272,16 +272,16 @@ class Planner:
             wx, wy, wz = wx / n, wy / n, wz / n
         else:
             wx = wy = wz = 0.0
-        # each axis's share of the plane: the length of its unit vector projected on it
-        amax = vlim = math.inf
-        for lim, e, w in zip(self.axis_limits, u1, (wx, wy, wz), strict=True):
-            if lim is not None:
-                comp = math.sqrt(e * e + w * w)
-                if comp > 1e-9:
-                    if lim[0] < amax * comp:
-                        amax = lim[0] / comp
-                    if lim[1] < vlim * comp:
-                        vlim = lim[1] / comp
+        # each axis's share of the plane (the length of its unit vector projected on it) over
+        # its limit: the greatest of them says what the plane allows
+        cx = math.sqrt(u1[0] * u1[0] + wx * wx)
+        cy = math.sqrt(u1[1] * u1[1] + wy * wy)
+        cz = math.sqrt(u1[2] * u1[2] + wz * wz)
+        ia, iv = self.inv_accel, self.inv_vel
+        k = max(cx * ia[0], cy * ia[1], cz * ia[2])
+        amax = 1.0 / k if k > 0.0 else math.inf
+        k = max(cx * iv[0], cy * iv[1], cz * iv[2])
+        vlim = 1.0 / k if k > 0.0 else math.inf
         if self.vcap is not None and self.vcap < vlim:
             vlim = self.vcap
         goal = prev.vmax if prev.vmax > seg.vmax else seg.vmax

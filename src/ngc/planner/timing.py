@@ -103,6 +103,15 @@ class TimeResult:
     by_line: LineTimes = field(default_factory=LineTimes)
     segments: int = 0
     length: float = 0.0
+    _slowest: dict[int, list[tuple[int, float]]] = field(default_factory=dict, repr=False,
+                                                        compare=False)
+
+    def slowest(self, count: int) -> list[tuple[int, float]]:
+        """The ``count`` lines that took the most time, slowest first (the earlier line on a
+        tie), as (line, seconds); worked out once for each count."""
+        if count not in self._slowest:
+            self._slowest[count] = self.by_line.slowest(count)
+        return self._slowest[count]
 
 
 class Timer:
@@ -125,20 +134,25 @@ class Timer:
 
     def segment(self, seg: Segment) -> None:
         r = self.result
-        kind = seg.kind
-        if kind == BLEND:
-            kind = self.last_kind
-        else:
-            self.last_kind = kind
+        r.segments += 1
+        r.length += seg.length
         t = seg.time - seg.overlap  # the overlap is counted with the move before
-        if kind == self.run_kind and seg.tool == self.run_tool:
+        parts = seg.parts
+        if seg.kind == BLEND and self.run_kind is not None:
+            # a corner: of the kind and the tool of the move before it (the run in progress)
             self.run_time += t
         else:
-            self._close_run()
-            self.run_kind, self.run_tool, self.run_time = kind, seg.tool, t
-        parts = seg.parts
+            kind = self.last_kind if seg.kind == BLEND else seg.kind
+            self.last_kind = kind
+            if kind == self.run_kind and seg.tool == self.run_tool:
+                self.run_time += t
+            else:
+                self._close_run()
+                self.run_kind, self.run_tool, self.run_time = kind, seg.tool, t
+            if seg.naive != math.inf:
+                r.naive_s += seg.naive
         by_line = r.by_line
-        if parts and len(parts) > 1:
+        if parts and len(parts) > 1:  # merged moves share the time by their lengths
             top = max(parts)[0]  # the greatest line
             if top >= len(by_line.seen):
                 by_line.grow(top)
@@ -154,10 +168,6 @@ class Timer:
                 by_line.grow(line)
             by_line.seconds[line] += t
             by_line.seen[line] = 1
-        if seg.naive != math.inf:
-            r.naive_s += seg.naive
-        r.segments += 1
-        r.length += seg.length
         if self.on_segment is not None:
             self.on_segment(seg)
 
