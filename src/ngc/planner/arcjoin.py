@@ -11,7 +11,7 @@ the outside otherwise, so it takes different lengths from the two moves.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from typing import TYPE_CHECKING
 
 from .geometry import Arc, Line, Piece, Vec
@@ -56,27 +56,33 @@ def coplanar(a: Shape, b: Shape) -> bool:
     return abs((q[0] - p[0]) * n[0] + (q[1] - p[1]) * n[1] + (q[2] - p[2]) * n[2]) < 1e-9
 
 
+def arcs_at(prev: Segment, seg: Segment) -> Iterator[tuple[Arc, bool, bool]]:
+    """The arcs at the join of ``prev`` and ``seg``: each with whether it comes first (ends at
+    the join) and whether it curves the way the corner turns (into the corner)."""
+    u1, u2 = prev.end_dir, seg.start_dir
+    turn = (u1[1] * u2[2] - u1[2] * u2[1], u1[2] * u2[0] - u1[0] * u2[2],
+            u1[0] * u2[1] - u1[1] * u2[0])
+    for shape, at_end in ((prev.shape, True), (seg.shape, False)):
+        base = shape.base if isinstance(shape, Piece) else shape
+        if not isinstance(base, Arc):
+            continue
+        p = shape.point(shape.length if at_end else 0.0)
+        t = u1 if at_end else u2
+        c = base.center
+        w = (c[0] - p[0], c[1] - p[1], c[2] - p[2])
+        bend = (t[1] * w[2] - t[2] * w[1], t[2] * w[0] - t[0] * w[2], t[0] * w[1] - t[1] * w[0])
+        yield base, at_end, turn[0] * bend[0] + turn[1] * bend[1] + turn[2] * bend[2] > 0.0
+
+
 def arc_blend_cap(prev: Segment, seg: Segment, theta: float, a: float) -> float:
     """The greatest speed of a corner blend next to an arc (radius r, acceleration a in the
     corner's plane): an arc that curves into the corner, with s = sin(θ/2), lets it run at
     √(0.65·a·r·(1 - s)/(1 + s)); one that curves away from it and follows the blend at
     √(π/(2√3)·a·r)."""
     cap = math.inf
-    u1, u2 = prev.end_dir, seg.start_dir
-    turn = (u1[1] * u2[2] - u1[2] * u2[1], u1[2] * u2[0] - u1[0] * u2[2],
-            u1[0] * u2[1] - u1[1] * u2[0])
     s = math.sin(0.5 * theta)
-    for shape, at_end in ((prev.shape, True), (seg.shape, False)):
-        base = shape.base if isinstance(shape, Piece) else shape
-        if not isinstance(base, Arc):
-            continue
-        r = base.radius
-        p = shape.point(shape.length if at_end else 0.0)
-        t = u1 if at_end else u2
-        c = base.center
-        w = (c[0] - p[0], c[1] - p[1], c[2] - p[2])
-        bend = (t[1] * w[2] - t[2] * w[1], t[2] * w[0] - t[0] * w[2], t[0] * w[1] - t[1] * w[0])
-        same = turn[0] * bend[0] + turn[1] * bend[1] + turn[2] * bend[2] > 0.0
+    for arc, at_end, same in arcs_at(prev, seg):
+        r = arc.radius
         if same:
             cap = min(cap, math.sqrt(0.65 * a * r * (1.0 - s) / (1.0 + s)))
         elif not at_end:
@@ -84,31 +90,12 @@ def arc_blend_cap(prev: Segment, seg: Segment, theta: float, a: float) -> float:
     return cap
 
 
-def arc_side(prev: Segment, seg: Segment) -> tuple[Arc, bool, bool] | None:
-    """The arc of a line-arc join, whether it comes first, and whether it curves the way the
-    corner turns."""
-    u1, u2 = prev.end_dir, seg.start_dir
-    turn = (u1[1] * u2[2] - u1[2] * u2[1], u1[2] * u2[0] - u1[0] * u2[2],
-            u1[0] * u2[1] - u1[1] * u2[0])
-    for shape, at_end in ((prev.shape, True), (seg.shape, False)):
-        base = shape.base if isinstance(shape, Piece) else shape
-        if not isinstance(base, Arc):
-            continue
-        p = shape.point(shape.length if at_end else 0.0)
-        t = u1 if at_end else u2
-        c = base.center
-        w = (c[0] - p[0], c[1] - p[1], c[2] - p[2])
-        bend = (t[1] * w[2] - t[2] * w[1], t[2] * w[0] - t[0] * w[2], t[0] * w[1] - t[1] * w[0])
-        return base, at_end, turn[0] * bend[0] + turn[1] * bend[1] + turn[2] * bend[2] > 0.0
-    return None
-
-
 def line_arc_fit(prev: Segment, seg: Segment, theta: float, radius: float, room: float,
                  speed: float, normal: float) -> tuple[float, float, float] | None:
     """How much a blend circle of ``radius`` tangent to both a line and an arc (in one plane)
     takes from ``prev`` and from ``seg``, and its length; the radius shrinks until neither
     gives more than ``room``."""
-    side = arc_side(prev, seg)
+    side = next(arcs_at(prev, seg), None)
     if side is None:
         return None
     arc, arc_first, same = side
