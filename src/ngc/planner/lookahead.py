@@ -248,13 +248,13 @@ class Planner:
         # parabolic blend
         if self.machine.arc_blend_enable and prev.kind != BLEND:
             if isinstance(prev.shape, Line) and isinstance(seg.shape, Line):
-                if self._blend(prev, seg, theta) is None:
+                if self._blend(prev, seg, theta, True) is None:
                     prev.term = STOP
                 return
             # with an arc: rounded under G64 P, or in one plane; never beside a helix
             if ((prev.tolerance > 0.0 or coplanar(prev.shape, seg.shape))
                     and not helical(prev.shape) and not helical(seg.shape)
-                    and self._blend(prev, seg, theta) is not None):
+                    and self._blend(prev, seg, theta, False) is not None):
                 return
         prev.term = PARABOLIC
         seg.soft = True
@@ -262,7 +262,9 @@ class Planner:
         prev.vmax = min(prev.vmax, prev.vsoft)
         seg.vmax = min(seg.vmax, seg.vsoft)
 
-    def _blend(self, prev: Segment, seg: Segment, theta: float) -> Segment | None:
+    def _blend(self, prev: Segment, seg: Segment, theta: float, lines: bool) -> Segment | None:
+        """Round the corner of ``prev`` and ``seg`` (two lines if ``lines``, else at least one
+        arc) by an arc, put between them in the queue; None if it cannot be."""
         u1, u2 = prev.end_dir, seg.start_dir
         # acceleration and speed limits in the plane of the corner
         cos_t = u1[0] * u2[0] + u1[1] * u2[1] + u1[2] * u2[2]
@@ -295,12 +297,11 @@ class Planner:
         if seg.length < room:
             room = seg.length
         pl, sl = prev.shape, seg.shape
-        lines = isinstance(pl, Line) and isinstance(sl, Line)
-        if not lines and prev.tolerance > 0.0:
-            # a blend with an arc is drawn as a Corner: keep it within the tolerance
-            room = min(room, corner_reach(theta, prev.tolerance,
-                                          min(radius_of(pl), radius_of(sl))))
         if not lines:
+            if prev.tolerance > 0.0:
+                # a blend with an arc is drawn as a Corner: keep it within the tolerance
+                room = min(room, corner_reach(theta, prev.tolerance,
+                                              min(radius_of(pl), radius_of(sl))))
             goal = min(goal, arc_blend_cap(prev, seg, theta, amax))
         b = blend_arc(theta, goal, room, prev.tolerance, 0.5 * amax, SQRT3_2 * amax)
         if b is None or b.trim <= 0.0:
@@ -373,6 +374,7 @@ class Planner:
             if seg.term != TANGENT:
                 v = 0.0
             else:
+                # (Segment.effective_accel, written out: this loop is the planner's hottest)
                 if nxt.term == PARABOLIC or nxt.soft:
                     a = nxt.half * nxt.reduce
                 else:
@@ -394,7 +396,7 @@ class Planner:
     # -- running ------------------------------------------------------------------------------
     def _run(self, seg: Segment) -> None:
         term = seg.term
-        a = (seg.half if term == PARABOLIC or seg.soft else seg.accel) * seg.reduce
+        a = seg.effective_accel()
         vin = self.vnow
         vmax = seg.vmax
         if vin == vmax and seg.vfinal == vmax and vmax > 0.0:  # cruise: most moves of a run

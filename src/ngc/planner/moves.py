@@ -228,7 +228,8 @@ class PathSink:
     def _feed_changed(self) -> None:
         """The feed in machine units per second, where it is the same for every move; else
         (G96 with a feed per revolution, or a spindle-synchronised move) it is worked out for
-        each move (``feed_at``)."""
+        each move (``feed_at``).  Straight feeds merge (naive CAM) in blend mode with a Q, at
+        one feed."""
         rate = self.feed * (self.rpm if self.per_rev else 1.0)
         self.fspeed = rate * self.scale / 60.0
         self.per_move = self.sync > 0.0 or (self.per_rev and self.css_max > 0.0)
@@ -258,13 +259,11 @@ class PathSink:
         g5, g9, t = self.g5x, self.g92, self.tlo
         x = op[0] * s + g9[0]
         y = op[1] * s + g9[1]
-        if self.rot:
-            x, y = x * self.cos_r - y * self.sin_r, x * self.sin_r + y * self.cos_r
+        x, y = x * self.cos_r - y * self.sin_r, x * self.sin_r + y * self.cos_r
         return (x + g5[0] + t[0], y + g5[1] + t[1], op[2] * s + g9[2] + g5[2] + t[2],
                 op[3] + g9[3] + g5[3] + t[3], op[4] + g9[4] + g5[4] + t[4],
                 op[5] + g9[5] + g5[5] + t[5])
 
-    # -- limits -------------------------------------------------------------------------------
     # -- moves --------------------------------------------------------------------------------
     def straight(self, end: Pos, line: int, feed: bool) -> None:
         if feed and self.merging:
@@ -419,17 +418,21 @@ class PathSink:
         if self.vcap is not None:
             vmax = min(vmax, self.vcap)
         accel = 0.5 * amax
+        vsoft = math.inf
         if ap < math.inf and shape.radius > 0:
             # the speed in the plane keeps the centripetal acceleration within √3/2 of it
             vmax = min(vmax, math.sqrt(SQRT3_2 * ap * shape.radius)
                        * (length / circ if circ > 1e-12 else 1.0))
+            # a helix counts with (rise / radius)²: its normal share shrinks by 1 + q², the
+            # tangential acceleration takes the rest
+            q = rise / shape.radius
+            q2 = q * q
             if rise > 1e-12 and amax < math.inf:
-                # a helix: the normal share shrinks with (rise / radius)², the tangential
-                # acceleration takes the rest
-                q = rise / shape.radius
-                a_n = SQRT3_2 * ap / (1.0 + q * q)
+                a_n = SQRT3_2 * ap / (1.0 + q2)
                 if a_n < amax:
                     accel = max(accel, math.sqrt(amax * amax - a_n * a_n))
+            # next to a parabolic blend the centripetal share is halved
+            vsoft = math.sqrt(0.5 * SQRT3_2 * ap * shape.radius * (1.0 + q2))
         speed = min(self.feed_at(start, end) if self.per_move else self.fspeed, vmax)
         if not speed > 0.0:
             raise NoSpeed(line)
@@ -437,11 +440,7 @@ class PathSink:
         seg = Segment(ARC, line, self.tool, shape, speed, accel, self.mode,
                       self.tolerance, naive)
         seg.half = 0.25 * amax  # next to a parabolic blend
-        if ap < math.inf and shape.radius > 0:
-            # next to a parabolic blend the centripetal share is halved; a helix counts with
-            # the radius r·(1 + (rise / r)²)
-            q = rise / shape.radius
-            seg.vsoft = math.sqrt(0.5 * SQRT3_2 * ap * shape.radius * (1.0 + q * q))
+        seg.vsoft = vsoft
         self.planner.add(seg)
 
     def nurbs(self, op: ops.NurbsFeed, line: int) -> None:

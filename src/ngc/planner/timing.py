@@ -51,6 +51,16 @@ class LineTimes(Mapping[int, float]):
         self.seconds[line] += seconds
         self.seen[line] = 1
 
+    def spread(self, parts: list[tuple[int, float]], per_unit: float) -> None:
+        """Add ``per_unit`` times each part's length to its line: ``parts`` are (line, length)."""
+        top = max(parts)[0]  # the greatest line
+        if top >= len(self.seen):
+            self.grow(top)
+        seconds, seen = self.seconds, self.seen
+        for line, length in parts:
+            seconds[line] += per_unit * length
+            seen[line] = 1
+
     def grow(self, line: int) -> None:
         """Make room for lines up to ``line`` (>= 0)."""
         if line < 0:
@@ -153,21 +163,10 @@ class Timer:
                 r.naive_s += seg.naive
         by_line = r.by_line
         if parts and len(parts) > 1:  # merged moves share the time by their lengths
-            top = max(parts)[0]  # the greatest line
-            if top >= len(by_line.seen):
-                by_line.grow(top)
             total = seg.parts_length
-            share = t / total if total > 0.0 else t
-            seconds, seen = by_line.seconds, by_line.seen
-            for line, length in parts:
-                seconds[line] += share * length
-                seen[line] = 1
+            by_line.spread(parts, t / total if total > 0.0 else t)
         else:
-            line = seg.line
-            if line >= len(by_line.seen):
-                by_line.grow(line)
-            by_line.seconds[line] += t
-            by_line.seen[line] = 1
+            by_line.add(seg.line, t)
         if self.on_segment is not None:
             self.on_segment(seg)
 
