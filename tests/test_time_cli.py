@@ -408,3 +408,18 @@ def test_writer_refuses_a_spacing_of_zero() -> None:
 def test_doctests(module: object) -> None:
     failed, attempted = doctest.testmod(module)  # type: ignore[arg-type]
     assert attempted > 0 and failed == 0
+
+
+@pytest.mark.parametrize("lines", [0, 1, time_report.JSON_CHUNK - 1, time_report.JSON_CHUNK,
+                                   time_report.JSON_CHUNK + 1, 2 * time_report.JSON_CHUNK])
+def test_the_json_by_line_is_whole_at_any_count(lines: int) -> None:
+    import io
+
+    result = timing.TimeResult()
+    for line in range(1, lines + 1):
+        result.by_line.add(line, 0.5)
+    out = io.StringIO()
+    time_report.write_json(out, "x.ngc", result, DEFAULT_MACHINE)
+    record = json.loads(out.getvalue())
+    assert len(record["by_line"]) == lines
+    assert all(value == 0.5 for value in record["by_line"].values())

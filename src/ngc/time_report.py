@@ -19,6 +19,7 @@ from .interp.source import open_text_program
 from .planner.machine import ANGULAR_AXES, Machine
 from .planner.timing import KINDS, TimeResult
 
+JSON_CHUNK = 4096  # lines of by_line written at a time
 DIGITS = 6  # JSON numbers are rounded to the microsecond (and the micrometre)
 SOURCE_WIDTH = 60  # characters of a slowest line's source text shown in the text report
 MACHINE_TIMES = (("tool change", "tool_change_time"), ("spindle start", "spindle_start_time"),
@@ -184,12 +185,16 @@ def write_json(out: TextIO, name: str, result: TimeResult, machine: Machine, top
     head = dumps(record(name, result, machine, top, sources))
     out.write(head[:-1] + ', "by_line": {')
     chunk: list[str] = []
+    sep = ""
     for line, seconds in result.by_line.items():
         chunk.append(f'"{line}": {_number(seconds)}')
-        if len(chunk) >= 4096:
-            out.write(", ".join(chunk) + ", ")
+        if len(chunk) >= JSON_CHUNK:
+            out.write(sep + ", ".join(chunk))
+            sep = ", "
             chunk.clear()
-    out.write(", ".join(chunk) + "}}\n")
+    if chunk:
+        out.write(sep + ", ".join(chunk))
+    out.write("}}\n")
 
 
 def _number(value: float) -> str:
