@@ -569,10 +569,13 @@ def _time_program(options: argparse.Namespace, program: Program, machine: Planne
     """Run the program through the planner, with the progress line; the trajectory, if asked
     for, is written to ``csv`` and committed.  Raises :class:`NgcError` on a program error."""
     from .planner.timing import time_lines
-    from .planner.trajectory import TrajectoryWriter
 
-    every = machine.servo_period if options.every is None else options.every
-    writer = None if csv is None else TrajectoryWriter(csv, machine, every)
+    writer = None
+    if csv is not None:
+        from .planner.trajectory import TrajectoryWriter  # loaded only for --trajectory
+
+        every = machine.servo_period if options.every is None else options.every
+        writer = TrajectoryWriter(csv, machine, every)
     assert program.handle is not None
     handle = text_reader(program.handle)
     with handle, _progress(program.name, handle, output_to_terminal=False) as progress:
