@@ -467,8 +467,8 @@ def test_interpret_dialect_by_marker_and_explicit() -> None:
     assert StraightFeed(3.0, 4.0, 0.0, 0.0, 0.0, 0.0) in [op for op, _, _ in sink.ops]
     with pytest.raises(NgcError, match="Unknown word"):
         ngc.interpret(MARKED, ListSink(), dialect="linuxcnc")
-    with pytest.raises(NgcError, match="Unknown name 'M2'"):
-        ngc.interpret("M2\n", ListSink(), dialect="engine")
+    with pytest.raises(NgcError, match="Unknown name 'T7'"):
+        ngc.interpret("T7 M6\n", ListSink(), dialect="engine")
 
 
 def test_interpret_engine_text_and_json_sinks() -> None:

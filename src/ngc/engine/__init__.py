@@ -7,8 +7,18 @@ Bézier of position over the segment's time, and a duration).
 dialect as ngc implements it.
 """
 
-from .interp import Dwell, Engine, EngineError, EngineSegment, ModeChange, Op, Stop, run
+from .interp import (
+    Dwell,
+    Engine,
+    EngineError,
+    EngineSegment,
+    ModeChange,
+    Op,
+    ProgramStop,
+    Stop,
+    run,
+)
 from .setup import Setup, read_setup
 
-__all__ = ["Dwell", "Engine", "EngineError", "EngineSegment", "ModeChange", "Op", "Setup", "Stop",
-           "read_setup", "run"]
+__all__ = ["Dwell", "Engine", "EngineError", "EngineSegment", "ModeChange", "Op", "ProgramStop",
+           "Setup", "Stop", "read_setup", "run"]

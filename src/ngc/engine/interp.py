@@ -12,6 +12,7 @@ from collections.abc import Iterator
 
 from ..errors import NgcRuntimeError, NgcSemanticError, NgcSyntaxError
 from . import cycles, motion
+from .mcodes import run_m_line, starts_m_line
 from .names import MOVE, NAMES, split_name
 from .reading import clauses, reference, single, strip, tokens, value
 from .state import (
@@ -28,11 +29,13 @@ from .state import (
     ModeChange,
     Op,
     PolarMode,
+    ProgramStop,
     Stop,
     direction,
 )
 
-__all__ = ["Dwell", "Engine", "EngineError", "EngineSegment", "ModeChange", "Op", "Stop", "run"]
+__all__ = ["Dwell", "Engine", "EngineError", "EngineSegment", "ModeChange", "Op", "ProgramStop",
+           "Stop", "run"]
 
 _WHAT = {1: "G1 (feed)", 4: "G4 (dwell)", 15: "G15 (cancel polar coordinates)",
          16: "G16 (set polar origin)", 31: "G31 (probe)", 43: "G43 (apply tool length offset)",
@@ -316,6 +319,9 @@ def _line(eng: Engine, n: int, raw: str) -> Iterator[Op]:
             raise EngineError(f"Unknown code G{code}")
     else:
         words = tokens(text)
+        if starts_m_line(words):
+            yield from run_m_line(eng, n, words)
+            return
         if words and words[0].upper() == "F":
             yield from _moving(eng, n, eng.motion, words)
             return
@@ -325,7 +331,7 @@ def _line(eng: Engine, n: int, raw: str) -> Iterator[Op]:
         code, used = named
         rest = words[used:]
     if code in _MODAL and rest and (_G_NUMBER.match(rest[0]) or rest[0].upper() == "F"
-                                    or split_name(rest)):
+                                    or starts_m_line(rest) or split_name(rest)):
         # a setting before the line's main code
         yield from _setting(eng, n, code, [])
         yield from _line(eng, n, " ".join(rest))
@@ -341,3 +347,5 @@ def run(text: str, engine: Engine | None = None, file: str | None = None) -> Ite
             yield from _line(eng, n, raw)
         except (NgcSemanticError, NgcSyntaxError, NgcRuntimeError) as err:
             raise err.locate(file=file, line=n, source=raw) from None
+        if eng.ended:  # M2, M30: "Lines of code after M2/M30 will not be executed."
+            return

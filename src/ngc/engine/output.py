@@ -5,19 +5,19 @@ from __future__ import annotations
 import json
 from typing import TypeGuard
 
-from .state import Dwell, EngineSegment, ModeChange, Op, Stop
+from .state import Dwell, EngineSegment, ModeChange, Op, ProgramStop, Stop
 
 _NAMES = {EngineSegment: "ENGINE_SEGMENT", Dwell: "DWELL", Stop: "STOP"}
 
 
 def is_op(op: object) -> TypeGuard[Op]:
     """Whether ``op`` is one of the engine dialect's operations."""
-    return type(op) in _NAMES or type(op) is ModeChange
+    return type(op) in _NAMES or type(op) in (ModeChange, ProgramStop)
 
 
 def name(op: Op) -> str:
     """The operation's name, as its JSON ``"op"`` and its text have it."""
-    return op.name if isinstance(op, ModeChange) else _NAMES[type(op)]
+    return op.name if isinstance(op, (ModeChange, ProgramStop)) else _NAMES[type(op)]
 
 
 def as_dict(op: Op) -> dict[str, object]:
@@ -29,6 +29,8 @@ def as_dict(op: Op) -> dict[str, object]:
         return {"op": "DWELL", "line": op.line, "seconds": op.seconds}
     if isinstance(op, Stop):
         return {"op": "STOP", "line": op.line}
+    if isinstance(op, ProgramStop):
+        return {"op": op.name, "line": op.line}
     return {"op": op.name, "line": op.line, "value": op.value}
 
 
@@ -45,5 +47,7 @@ def as_text(op: Op) -> str:
         return f"DWELL(line={op.line}, seconds={_number(op.seconds)})"
     if isinstance(op, Stop):
         return f"STOP(line={op.line})"
+    if isinstance(op, ProgramStop):
+        return f"{op.name}(line={op.line})"
     return f"{op.name}(line={op.line}, {json.dumps(op.value)})"
 

@@ -13,6 +13,8 @@ from .state import AXIS, POLARS, VECTORS, EngineError, Params
 WORDS = frozenset("FIJKPQR")
 _REFERENCE = re.compile(r"(V[XYZABCUVW]|P[XYZ]|[XYZABCUVWFIJKPQR])(?![A-Z])", re.IGNORECASE)
 
+_M_CODE = re.compile(r"m\d+", re.IGNORECASE)
+
 Clauses = list[tuple[str, list[float]]]
 
 
@@ -78,6 +80,8 @@ def clauses(words: list[str], params: Params) -> Clauses:
         ref = reference(tok)
         if ref is not None:
             out.append((ref, []))
+        elif _M_CODE.fullmatch(tok):
+            raise EngineError(f"{tok.upper()}: M codes go on a line of their own (with S)")
         elif not out:
             raise NgcSyntaxError(f"Expression '{tok}' before any reference")
         else:

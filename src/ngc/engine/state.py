@@ -52,6 +52,14 @@ class Stop(NamedTuple):
     line: int
 
 
+class ProgramStop(NamedTuple):
+    """M0, M1, M2 and M30, by LinuxCNC's canon names: ``PROGRAM_STOP`` (M0), ``OPTIONAL_PROGRAM_STOP``
+    (M1) or ``PROGRAM_END`` (M2, M30: nothing after it runs)."""
+
+    line: int
+    name: str
+
+
 class ModeChange(NamedTuple):
     """A setting that moves nothing: ``name`` (UNITS, PLANE, FEED_RATE, FIXTURE, ...) and its
     new value."""
@@ -61,7 +69,7 @@ class ModeChange(NamedTuple):
     value: object
 
 
-Op = EngineSegment | Dwell | Stop | ModeChange
+Op = EngineSegment | Dwell | Stop | ProgramStop | ModeChange
 
 
 @dataclass
@@ -147,6 +155,11 @@ class Engine:
     polar_mode: PolarMode | None = None
     cycle: Cycle = field(default_factory=Cycle)
     running: dict[int, float] = field(default_factory=dict)  # axis -> speed (mm/s, degrees/s)
+    spindle: str = "off"  # M3 "clockwise", M4 "counterclockwise", M5 "off"
+    spindle_speed: float = 0.0  # S, revolutions per minute
+    mist: bool = False  # M7 (M9 off)
+    flood: bool = False  # M8 (M9 off)
+    ended: bool = False  # M2, M30
     params: Params = field(default_factory=Params)
     setup: Setup = field(default_factory=Setup)
 
