@@ -669,6 +669,14 @@ def take_canon_point(m: Machine) -> None:
         c.pdir = normal - HALF_PI if c.side > 0 else normal + HALF_PI
 
 
+def offset_turned(c: Compensation) -> None:
+    """The compensated point moved away from the programmed one's offset (a lathe cycle's profile
+    leaves it at its last point): the next corner turns from the direction square to the offset
+    from the programmed point to the compensated one, as rs274 measures every corner."""
+    normal = _atan2(c.cb - c.prog[c.b], c.ca - c.prog[c.a])
+    c.pdir = normal - HALF_PI if c.side > 0 else normal + HALF_PI
+
+
 # -- units ----------------------------------------------------------------------------------------
 def convert(m: Machine, k: float) -> None:
     """The units changed (``k`` new units per old one): the held moves and every length kept

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 from ...errors import NgcSemanticError
 from ...language import codes
+from .. import comp
 from ..lathe.corners import A_ZERO, BOTH_A_AND_C, round_corners
 from ..lathe.finishing import g70
 from ..lathe.offset import check_joinable
@@ -130,8 +131,10 @@ def check_monotonic(profile: list[Seg], facing: bool) -> None:
 
 def _record(m: Machine, q: float, start: tuple[float, float]
             ) -> tuple[list[Seg], tuple[str | None, int, str]]:
-    """Run the subroutine ``q`` as a profile from ``start``; the machine's position and
-    parameters are as before, the modal motion as its last move left it."""
+    """Run the subroutine ``q`` as a profile from ``start``; the parameters are as before, the
+    modal motion as its last move left it, and the current point is the profile's last point,
+    as rs274 leaves it (a G70 P0 then a G91 move shows it; under compensation the compensated
+    point moves there while the programmed one stays: the next pass's moves turn from it)."""
     st = m.state
     params = m.params
     pos = list(st.pos)
@@ -140,13 +143,30 @@ def _record(m: Machine, q: float, start: tuple[float, float]
     named = dict(params.globals)
     m.profile = []
     assert m.run_profile is not None
+    done = False
     try:
         where = m.run_profile(q)
         profile: list[Seg] = m.profile
+        done = True
     finally:
         m.profile = None
+        last = st.pos
         st.pos = pos
         params.numbered[:] = numbered
         params.globals.clear()
         params.globals.update(named)
+    if done:
+        _move_to(m, last[0], last[2])
     return profile, where
+
+
+def _move_to(m: Machine, x: float, z: float) -> None:
+    """The current point (the compensated one under compensation) is now ``x, z``."""
+    pos = list(m.state.pos)
+    pos[0] = x
+    pos[2] = z
+    m.state.pos = pos
+    c = m.comp
+    if c is not None and c.side != 0:
+        c.ca, c.cb = pos[c.a], pos[c.b]
+        comp.offset_turned(c)
