@@ -100,17 +100,17 @@ def _side(profile: Profile, entry: tuple[float, float], axis: tuple[float, float
 
 
 def _move(seg: Seg, side: float, d: float) -> Seg:
-    """``seg`` moved ``d`` to its left (``side`` +1) or right (-1); an arc keeps its centre, each
-    of its ends moving along its own radius."""
+    """``seg`` moved ``d`` to its left (``side`` +1) or right (-1); an arc keeps its centre and
+    is scaled about it by its start's new radius over its old one (a centre-format arc whose end
+    lies a little off its start's circle keeps that proportion: rs274's ends at 1000 times the
+    size show it)."""
     if seg.kind == LINE:
         return _shift(seg, side, d)
     r_start = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
-    r_end = math.hypot(seg.x1 - seg.cx, seg.z1 - seg.cz)
     toward_centre = side if seg.kind == CCW else -side
-    k0 = (r_start - toward_centre * d) / r_start
-    k1 = (r_end - toward_centre * d) / r_end
-    return seg._replace(x0=seg.cx + (seg.x0 - seg.cx) * k0, z0=seg.cz + (seg.z0 - seg.cz) * k0,
-                        x1=seg.cx + (seg.x1 - seg.cx) * k1, z1=seg.cz + (seg.z1 - seg.cz) * k1)
+    k = (r_start - toward_centre * d) / r_start
+    return seg._replace(x0=seg.cx + (seg.x0 - seg.cx) * k, z0=seg.cz + (seg.z0 - seg.cz) * k,
+                        x1=seg.cx + (seg.x1 - seg.cx) * k, z1=seg.cz + (seg.z1 - seg.cz) * k)
 
 
 def _crossing(a: Seg, b: Seg, mirror: float) -> tuple[float, float]:
@@ -127,10 +127,9 @@ def _crossing(a: Seg, b: Seg, mirror: float) -> tuple[float, float]:
         return points[0]
     if a.kind == LINE or b.kind == LINE:
         line, arc = (a, b) if a.kind == LINE else (b, a)
-        # the radius at the arc's far end from the corner (what rs274 shows where the two
-        # differ, a centre-format arc within its tolerance)
-        r = math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz) if arc is b else \
-            math.hypot(arc.x0 - arc.cx, arc.z0 - arc.cz)
+        # the radius at the arc's end (what rs274 shows where the two differ, a centre-format
+        # arc within its tolerance)
+        r = math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz)
         dx, dz = line.x1 - line.x0, line.z1 - line.z0
         n2 = dx * dx + dz * dz
         t = ((arc.cx - line.x0) * dx + (arc.cz - line.z0) * dz) / n2

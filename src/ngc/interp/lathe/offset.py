@@ -13,24 +13,15 @@ EPS = 1e-9
 
 
 def _shift(seg: Seg, side: float, d: float) -> Seg:
-    """``seg`` moved ``d`` to its left (``side`` +1) or right (-1), in the (z, x) plane."""
-    if seg.kind == LINE:
-        dx, dz = seg.x1 - seg.x0, seg.z1 - seg.z0
-        n = math.hypot(dx, dz)
-        if n == 0.0:
-            return seg
-        # left of the direction (dz, dx) in (z, x) coordinates is (-dx, dz)
-        oz, ox = -dx / n * side * d, dz / n * side * d
-        return seg._replace(x0=seg.x0 + ox, z0=seg.z0 + oz, x1=seg.x1 + ox, z1=seg.z1 + oz)
-    r = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
-    # G3 (CCW in (z, x)) has its centre on the left
-    toward_centre = side if seg.kind == CCW else -side
-    r2 = r - toward_centre * d
-    k0 = r2 / r
-    r_end = math.hypot(seg.x1 - seg.cx, seg.z1 - seg.cz)
-    k1 = r2 / r_end
-    return seg._replace(x0=seg.cx + (seg.x0 - seg.cx) * k0, z0=seg.cz + (seg.z0 - seg.cz) * k0,
-                        x1=seg.cx + (seg.x1 - seg.cx) * k1, z1=seg.cz + (seg.z1 - seg.cz) * k1)
+    """The line ``seg`` moved ``d`` to its left (``side`` +1) or right (-1), in the (z, x)
+    plane (arcs: ``finishing._move``)."""
+    dx, dz = seg.x1 - seg.x0, seg.z1 - seg.z0
+    n = math.hypot(dx, dz)
+    if n == 0.0:
+        return seg
+    # left of the direction (dz, dx) in (z, x) coordinates is (-dx, dz)
+    oz, ox = -dx / n * side * d, dz / n * side * d
+    return seg._replace(x0=seg.x0 + ox, z0=seg.z0 + oz, x1=seg.x1 + ox, z1=seg.z1 + oz)
 
 
 def tangent(seg: Seg, at_end: bool) -> tuple[float, float]:
