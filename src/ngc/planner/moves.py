@@ -63,12 +63,14 @@ class PathSink:
         self.shift = [0.0] * 6  # g5x + g92 + tool length offset, when there is no rotation
         self.identity = True  # program coordinates are machine coordinates
         self.plane = PLANES["CANON_PLANE_XY"]
-        self.feed = 0.0  # program units per minute
+        self.feed = 0.0  # units per minute (or per revolution) of the program when it was set
+        self.feed_scale = 1.0  # those units to machine units: a feed keeps the units it was set
+        # in (F runs before G20/G21 in the order of execution, and canon converts it when set)
         self.per_rev = False
         self.rpm = 0.0
         self.fspeed = 0.0  # the programmed feed in machine units per second
         self.css_max = 0.0  # G96: the spindle's greatest speed (rpm); 0: G97, S in rpm
-        self.sync = 0.0  # G33, G33.1, G76: program units per revolution; 0: not synchronised
+        self.sync = 0.0  # G33, G33.1, G76: machine units per revolution; 0: not synchronised
         self.inch_program = self.inch_machine  # the program's units are inches
         self.mode = EXACT  # until the program's first SET_MOTION_CONTROL_MODE
         self.tolerance = 0.0  # machine units; 0: none
@@ -109,6 +111,7 @@ class PathSink:
             self.nurbs(op, line)  # type: ignore[arg-type]
         elif kind is ops.SetFeedRate:
             self.feed = op.rate  # type: ignore[attr-defined]
+            self.feed_scale = self.scale
             self._feed_changed()
         elif kind is ops.SetFeedMode:
             self.per_rev = op.mode == 1  # type: ignore[attr-defined]
@@ -123,7 +126,7 @@ class PathSink:
             self._feed_changed()
         elif kind is ops.StartSpeedFeedSync:
             self.flush_chain()
-            self.sync = op.per_rev  # type: ignore[attr-defined]
+            self.sync = op.per_rev * self.scale  # type: ignore[attr-defined]
             self._feed_changed()
         elif kind is ops.StopSpeedFeedSynch:
             self.flush_chain()
@@ -231,7 +234,7 @@ class PathSink:
         each move (``feed_at``).  Straight feeds merge (naive CAM) in blend mode with a Q, at
         one feed."""
         rate = self.feed * (self.rpm if self.per_rev else 1.0)
-        self.fspeed = rate * self.scale / 60.0
+        self.fspeed = rate * self.feed_scale / 60.0
         self.per_move = self.sync > 0.0 or (self.per_rev and self.css_max > 0.0)
         self.merging = (self.mode == PARABOLIC and self.naive_tol > 0.0
                         and not self.per_move)
@@ -247,8 +250,8 @@ class PathSink:
             surface = rpm * (12.0 if self.inch_program else 1000.0)  # per minute, program units
             circle = 2.0 * math.pi * radius
             rpm = self.css_max if circle * self.css_max <= surface else surface / circle
-        per_rev = self.sync if self.sync > 0.0 else self.feed
-        return per_rev * rpm * self.scale / 60.0
+        per_rev = self.sync if self.sync > 0.0 else self.feed * self.feed_scale
+        return per_rev * rpm / 60.0
 
     def to_machine(self, op: Sequence[float]) -> Pos:
         s = self.scale
