@@ -4,11 +4,25 @@ what LinuxCNC took, within a servo cycle or two."""
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from ngc.planner.timing import time_text
 
 HEAD = "G17 G21 G90 G94 G40 G49 G80\n"
+
+
+def curve(mode: str, feeds: tuple[float, float], every: int) -> str:
+    """100 lines of 0.5 mm along a circle of radius 20, the feed switching every ``every``
+    lines: the feed changes between blended moves of an adaptive clearing path."""
+    lines = [HEAD + mode, "G0 Z1", "G1 Z0 F500"]
+    for i in range(1, 101):
+        t = 0.5 * i / 20.0
+        feed = feeds[(i // every) % 2]
+        lines.append(f"G1 X{20 * math.sin(t):.4f} Y{20 - 20 * math.cos(t):.4f} F{feed:g}")
+    return "\n".join([*lines, "G0 Z5", ""])
+
 
 # name, program, LinuxCNC's measured time (s)
 CASES: list[tuple[str, str, float]] = [
@@ -16,6 +30,11 @@ CASES: list[tuple[str, str, float]] = [
     # 0.1 mm/s); the last line's F600 is in mm again
     ("feed_on_unit_switch", HEAD + "G61.1\nG1 X10 F600\nG20 F6\nG1 X0.42\nG21\nG1 X30 F600\n",
      9.635),
+    # a corner blend from a fast feed into a slow one runs at the fast one and slows down along
+    # the blend; what it has not shed the slow move sheds at its own acceleration
+    ("feed_changes_g64_p", curve("G64 P0.01", (1000, 2500), 3), 2.411),
+    ("feed_changes_every_line_g64_p", curve("G64 P0.01", (1000, 2500), 1), 1.756),
+    ("feed_changes_g64", curve("G64", (1000, 2500), 3), 2.784),
 ]
 
 

@@ -81,6 +81,7 @@ class Segment:
         "vin",
         "vmax",
         "vout",
+        "vreach",
         "vsoft",
     )
 
@@ -112,6 +113,10 @@ class Segment:
         self.term = mode if term is None else term
         self.vend = 0.0  # greatest speed at the join with the next move
         self.vfinal = 0.0  # speed planned at the end (backward pass)
+        # the greatest speed at the end from which it and the moves after it can still slow
+        # down in time: vfinal, but for a corner blend before a slower feed, whose end may be
+        # faster than that feed (the next move then slows down within itself)
+        self.vreach = 0.0
         self.reduce = 1.0  # acceleration factor left after a kink or an exact-path corner
         if dirs is None:
             dirs = (shape.start_direction(), shape.end_direction())
@@ -149,11 +154,23 @@ def profile_time(v0: float, v1: float, vmax: float, a: float, length: float) -> 
     with acceleration ``a`` and speed limit ``vmax``."""
     if length <= 0.0:
         return 0.0, v0, v0
+    if v0 > vmax:
+        # entered above its own speed (a feed that drops after a corner blend): it slows down
+        # to it at once, then runs as usual
+        d_slow = (v0 * v0 - vmax * vmax) / (2.0 * a)
+        if d_slow >= length:
+            v = math.sqrt(v0 * v0 - 2.0 * a * length)
+            return 2.0 * length / (v0 + v), v, v0
+        t, v1, _ = profile_time(vmax, v1, vmax, a, length - d_slow)
+        return (v0 - vmax) / a + t, v1, v0
+    if v0 * v0 - 2.0 * a * length > v1 * v1:
+        # cannot slow down to v1 in time (a corner blend entered at its full speed, or a
+        # look-ahead too short): it slows down all along, and the next move goes on
+        v = math.sqrt(v0 * v0 - 2.0 * a * length)
+        return 2.0 * length / (v0 + v), v, v0
     reach = math.sqrt(v0 * v0 + 2.0 * a * length)
     if v1 > reach:
         v1 = reach
-    if vmax < v0:
-        vmax = v0
     if vmax < v1:
         vmax = v1
     vp2 = a * length + 0.5 * (v0 * v0 + v1 * v1)
@@ -162,8 +179,6 @@ def profile_time(v0: float, v1: float, vmax: float, a: float, length: float) -> 
         vp = vmax
     if vp <= 0.0:
         return 0.0, 0.0, 0.0
-    if vp < v0:  # cannot slow down in time (look-ahead too short): slow down as one can
-        vp = v0
     d_acc = (vp * vp - v0 * v0) / (2.0 * a)
     d_dec = (vp * vp - v1 * v1) / (2.0 * a)
     cruise = length - d_acc - d_dec
@@ -366,29 +381,33 @@ class Planner:
         q = self.queue
         n = len(q)
         nxt = q[-1]
-        nxt.vfinal = 0.0
+        nxt.vfinal = nxt.vreach = 0.0
         i = n - 2
         count = 0
         while i >= 0 and count < self.depth:
             seg = q[i]
             if seg.term != TANGENT:
-                v = 0.0
+                v = reach = 0.0
             else:
                 # (Segment.effective_accel, written out: this loop is the planner's hottest)
                 if nxt.term == PARABOLIC or nxt.soft:
                     a = nxt.half * nxt.reduce
                 else:
                     a = nxt.accel * nxt.reduce
-                v = math.sqrt(nxt.vfinal * nxt.vfinal + 2.0 * a * nxt.length)
+                v = math.sqrt(nxt.vreach * nxt.vreach + 2.0 * a * nxt.length)
                 if v > seg.vend:
                     v = seg.vend
-                if v > nxt.vmax:
-                    v = nxt.vmax
                 if v > seg.vmax:
                     v = seg.vmax
-            if v == seg.vfinal and count > 0:
+                reach = v
+                if v > nxt.vmax:
+                    v = nxt.vmax
+                if seg.kind is not BLEND:
+                    reach = v
+            if v == seg.vfinal and reach == seg.vreach and count > 0:
                 break
             seg.vfinal = v
+            seg.vreach = reach
             nxt = seg
             i -= 1
             count += 1
