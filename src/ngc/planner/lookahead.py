@@ -266,8 +266,9 @@ class Planner:
                 if self._blend(prev, seg, theta, True) is None:
                     prev.term = STOP
                 return
-            # with an arc: rounded under G64 P, or in one plane; never beside a helix
-            if ((prev.tolerance > 0.0 or coplanar(prev.shape, seg.shape))
+            # with an arc: rounded when both lie in one plane, with or without P (a line across
+            # the plane of an arc keeps a parabolic blend under G64 P too); never beside a helix
+            if (coplanar(prev.shape, seg.shape)
                     and not helical(prev.shape) and not helical(seg.shape)
                     and self._blend(prev, seg, theta, False) is not None):
                 return
