@@ -19,11 +19,6 @@ CASES = Path(__file__).parent / "golden" / "cases"
 
 # Known differences, each with its reason; strict, so a case that starts passing is noticed.
 KNOWN: dict[str, str] = {
-    "fuzz-g59-g92-inch-minus-zero": "the sign of a zero: rs274 prints Z -0.0000 after a G59 switch "
-    "with a G92 offset in G20; the order of its arithmetic there is not known yet",
-    "fuzz-rotation-switch-zero-sign": "the sign of a zero: after G10 L2 with a rotation and a "
-    "switch to that system, a G0 without axis words prints X -0.0000 Y 0.0000 in rs274, the "
-    "other way round in ngc; the order of its rotation arithmetic there is not known yet",
     "expr-known-tan-271-last-place": "TAN[271]: the C library's tanl is 1.08 long double units "
     "off there, and the double rounding shows it; ngc's exact long double tangent rounds the "
     "other way (one case in about 5000)",

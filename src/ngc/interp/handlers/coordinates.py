@@ -90,7 +90,13 @@ def select_system(it: Machine, code: int) -> None:
     tools.hold_canon(st)
     load_system(it, index)
     it.params.numbered[5220] = float(index)
+    # rs274 takes the G92 offset off as its parameters hold it (through inches); the offset
+    # itself stays as it was
+    offset = st.g92
+    if st.g92_applied:
+        st.g92 = _stored_g92(it)
     st.pos = to_program(st, machine)
+    st.g92 = offset
     tools.held(st)
     emit_g5x(it)
     emit_g92(it)
@@ -133,6 +139,11 @@ def g10(it: Machine, r: Resolved) -> None:
     old = st.g5x
     tools.hold_canon(st)
     load_system(it, index)
+    # rs274 takes the axes the line sets as they are, in program units; the others come back
+    # from their parameters (inches), which a value in inches does not always survive exactly
+    # (G20 G10 L2 P1 X-0.27835 Z1 then G10 L2 P1 Z2: X -0.2783, then -0.2784).
+    for i, v in values.items():
+        st.g5x[i] = v
     point = [point[i] + old[i] - st.g5x[i] for i in range(AXES)]
     if st.rotation:
         point[0], point[1] = rotate(point[0], point[1], -st.rotation)
@@ -145,8 +156,11 @@ def g10(it: Machine, r: Resolved) -> None:
 def _l20_origin(it: Machine, values: dict[int, float], index: int) -> dict[int, float]:
     """Origins that make the current machine position read ``values`` in system ``index``.
 
-    Axes not given keep their current coordinate; with a rotation, giving X or Y moves the
-    origin in both X and Y.
+    rs274 finds the current point in that system from the system's origin and the G92/G52
+    offset as their parameters hold them (through inches: a value in inches may come back a
+    little off), then moves the origin by the difference: ``(origin + point) - value``, in that
+    order, which decides the last bit.  Axes not given keep their current coordinate; with a
+    rotation, giving X or Y moves the origin in both X and Y.
     """
     st = it.state
     machine = to_machine(st, st.pos, tlo=False)  # the origin is set without the tool offset
@@ -154,16 +168,18 @@ def _l20_origin(it: Machine, values: dict[int, float], index: int) -> dict[int, 
     numbered = it.params.numbered
     rot = numbered[base + 9]
     origin = from_parameters(st, numbered[base:base + AXES])
-    local = [machine[i] - origin[i] for i in range(AXES)]
-    if rot:
-        local[0], local[1] = rotate(local[0], local[1], -rot)
-    point = [values.get(i, local[i] - st.g92[i]) + st.g92[i] for i in range(AXES)]
-    if rot:
-        point[0], point[1] = rotate(point[0], point[1], rot)
-    changed = set(values)
-    if rot and changed & {0, 1}:
-        changed |= {0, 1}
-    return {i: machine[i] - point[i] for i in changed}
+    offset = _stored_g92(it) if st.g92_applied else [0.0] * AXES
+    out = {i: (origin[i] + (machine[i] - origin[i] - offset[i])) - v
+           for i, v in values.items() if not rot or i > 1}
+    if rot and (0 in values or 1 in values):
+        # the same in the rotated system: (origin + rotated point) - rotated new point
+        x, y = rotate(machine[0] - origin[0], machine[1] - origin[1], -rot)
+        here = (x - offset[0], y - offset[1])
+        there = (values.get(0, here[0]), values.get(1, here[1]))
+        here = rotate(*here, rot)
+        there = rotate(*there, rot)
+        out[0], out[1] = (origin[0] + here[0]) - there[0], (origin[1] + here[1]) - there[1]
+    return out
 
 
 # -- G92 / G52 ----------------------------------------------------------------------------------
