@@ -34,6 +34,7 @@ from collections.abc import Callable
 
 import continued
 import contour
+import inch
 import lathe
 import probing
 import spindlesync
@@ -1404,6 +1405,19 @@ def gen_offsets(seed: int) -> str:
     return text_of(_program("offsets", seed, OFFSETS, 5, 40).lines)
 
 
+OFFSETS_INCH: list[tuple[float, Callable[[Gen], None]]] = [*OFFSETS, *inch.STATEMENTS]
+
+
+def gen_offsets_inch(seed: int) -> str:
+    """``offsets`` in G20 with five-decimal values (``inch.py``)."""
+    g = Gen(seed, "offsets-inch")
+    preamble(g)
+    g.emit(g.words(g.set_units(False)))
+    body(g, OFFSETS_INCH, g.rng.randint(5, 40))
+    ending(g)
+    return text_of(g.lines)
+
+
 MIXED: list[tuple[float, Callable[[Gen], None]]] = [
     *MOTION, (30, st_mixed_line), (0.6, st_comp_contour), (0.4, st_tool_change),
     (0.3, st_tool_offset), (0.3, st_tool_params)]
@@ -1637,6 +1651,7 @@ def text_of(lines: list[str]) -> str:
 KINDS: dict[str, Callable[[int], str]] = {
     "motion": gen_motion,
     "offsets": gen_offsets,
+    "offsets-inch": gen_offsets_inch,
     "oword": gen_oword,
     "mixed": gen_mixed,
     "failing": gen_failing,
