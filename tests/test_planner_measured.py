@@ -30,6 +30,12 @@ CASES: list[tuple[str, str, float]] = [
     # 0.1 mm/s); the last line's F600 is in mm again
     ("feed_on_unit_switch", HEAD + "G61.1\nG1 X10 F600\nG20 F6\nG1 X0.42\nG21\nG1 X30 F600\n",
      9.635),
+    # no G61/G64 anywhere: LinuxCNC blends from the start, as G64 without P (the same
+    # program after G64 took the same 4.772 s, after G61 5.158 s)
+    ("no_blend_mode", HEAD + "G1 X50 F3000\nY50\nX0\nY0\nG1 X20 Y5\nX40 Y0\n", 4.772),
+    # after a canned cycle the corner between two rapids (Z up, then XY) stops
+    ("rapid_corner_after_cycle", HEAD + "S10000 M3\nG0 Z25\nG0 X21 Y40\n"
+     "G99 G83 X21 Y40 Z-12 R2 Q4 F900\nG80\nG0 Z25\nG0 X0 Y0\nM5\n", 4.865),
     # a corner blend from a fast feed into a slow one runs at the fast one and slows down along
     # the blend; what it has not shed the slow move sheds at its own acceleration
     ("feed_changes_g64_p", curve("G64 P0.01", (1000, 2500), 3), 2.411),

@@ -210,6 +210,7 @@ class Planner:
         self.group = 0.0  # time of the moves run since the last stop
         self.vnow = 0.0  # speed at the end of the last move run
         self.overlap = 0.0  # how long the next move runs alongside the last one
+        self.rapid_corners_stop = False  # a corner between two rapids stops (after a canned cycle)
 
     # -- adding moves ------------------------------------------------------------------------
     def add(self, seg: Segment) -> None:
@@ -258,6 +259,9 @@ class Planner:
             factor = 1.0 - max(self.kink_ratio, 0.001)
             prev.reduce = min(prev.reduce, factor)
             seg.reduce = min(seg.reduce, factor)
+            return
+        if self.rapid_corners_stop and seg.kind == RAPID:
+            prev.term = STOP
             return
         # blend mode: a corner is rounded by an arc where it can be (arcjoin), else it keeps a
         # parabolic blend

@@ -72,7 +72,11 @@ class PathSink:
         self.css_max = 0.0  # G96: the spindle's greatest speed (rpm); 0: G97, S in rpm
         self.sync = 0.0  # G33, G33.1, G76: machine units per revolution; 0: not synchronised
         self.inch_program = self.inch_machine  # the program's units are inches
-        self.mode = EXACT  # until the program's first SET_MOTION_CONTROL_MODE
+        # blend mode without a tolerance until the program says otherwise, as the interpreter
+        # starts (G64 without P) and as LinuxCNC runs it (measured: a square with no G61/G64
+        # takes G64's time to the servo cycle)
+        self.mode = PARABOLIC
+        self.exact_line = -1  # the line of the last switch to exact path
         self.tolerance = 0.0  # machine units; 0: none
         self.naive_tol = 0.0  # machine units
         self.naive_tol2 = 0.0  # its square
@@ -137,10 +141,16 @@ class PathSink:
         elif kind is ops.SetMotionControlMode:
             self.flush_chain()
             self.mode = STOP if op.mode == "CANON_EXACT_STOP" else EXACT  # type: ignore[attr-defined]
+            self.exact_line = line
             self.tolerance = 0.0
             self._feed_changed()
         elif kind is ops.SetMotionControlContinuous:
             self.flush_chain()
+            if line == self.exact_line:
+                # exact path and back on one line: a canned cycle.  After one, LinuxCNC takes
+                # the corners between two rapids at a crawl (5.15 mm/s between Z and XY on the
+                # reference machine, in every program measured): they stop here
+                self.planner.rapid_corners_stop = True
             self.mode = PARABOLIC
             self.tolerance = op.tolerance * self.scale  # type: ignore[attr-defined]
             self._feed_changed()
