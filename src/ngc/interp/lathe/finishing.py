@@ -153,6 +153,26 @@ def _crossing(a: Seg, b: Seg, mirror: float) -> tuple[float, float]:
     return mx - h * dz / dist, mz + h * dx / dist
 
 
+def _arc_end_at_corner(arc: Seg, corner: Seg) -> tuple[float, float]:
+    """Where a moved arc ends at an outside corner, as rs274 finds it: where its circle, of its
+    moved start's radius, meets the circle about the programmed corner through its moved end
+    (the point on the line between their centres where they miss each other, as a
+    centre-format arc whose end lies beyond its start's circle makes them: measured at 1000
+    times the size); of two crossings, the one nearer to the moved end."""
+    r1 = math.hypot(arc.x0 - arc.cx, arc.z0 - arc.cz)
+    r2 = math.hypot(arc.x1 - corner.x0, arc.z1 - corner.z0)
+    dx, dz = corner.x0 - arc.cx, corner.z0 - arc.cz
+    dist = math.hypot(dx, dz)
+    along = (dist * dist + r1 * r1 - r2 * r2) / (2 * dist)
+    mx, mz = arc.cx + along * dx / dist, arc.cz + along * dz / dist
+    h2 = r1 * r1 - along * along
+    if h2 <= 0:
+        return mx, mz
+    h = math.sqrt(h2) / dist
+    points = ((mx - h * dz, mz + h * dx), (mx + h * dz, mz - h * dx))
+    return min(points, key=lambda pt: math.hypot(pt[0] - arc.x1, pt[1] - arc.z1))
+
+
 def _mirror(profile: Profile, axis: tuple[float, float]) -> float:
     """-1 where rs274's frame for the profile is a mirror image of ours: it turns Z round for a
     profile going +Z and X round for one whose last point lies below its first."""
@@ -198,13 +218,18 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
         if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
             out.append(seg)
             continue
-        gap = (seg.z0 - prev.z1) * gz + (seg.x0 - prev.x1) * gx
-        if turn * side * d < 0 and abs(gap) >= ROUNDED:
+        corner = moves[i]
+        outside = turn * side * d < 0
+        ex, ez = prev.x1, prev.z1
+        if outside and prev.kind != LINE:
+            ex, ez = _arc_end_at_corner(shifted[i - 1], corner)
+        gap = (seg.z0 - ez) * gz + (seg.x0 - ex) * gx
+        if outside and abs(gap) >= ROUNDED:
             # the moved segments part (an outside corner): an arc about the corner joins them
-            corner = moves[i]
             corners.add(len(out))
-            out.append(Seg(CCW if turn > 0 else CW, prev.x1, prev.z1, seg.x0, seg.z0,
-                           corner.x0, corner.z0, line=corner.line))
+            out[-1] = prev._replace(x1=ex, z1=ez)
+            out.append(Seg(CCW if turn > 0 else CW, ex, ez, seg.x0, seg.z0, corner.x0,
+                           corner.z0, line=corner.line))
             out.append(seg)
             continue
         if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS:
@@ -242,14 +267,14 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
     first = profile[0]
     for k in range(passes, 0, -1):
         dist = (k - 1) * (d - e) / p + e
-        path = moved(profile, side, dist, axis)
+        path, corners = moved_with_corners(profile, side, dist, axis)
         out.traverse(*entry)
         if path:
             out.traverse(path[0].x0, path[0].z0)
         else:
             out.traverse(first.x1, first.z1)
-        for seg in path:
+        for i, seg in enumerate(path):
             if seg.kind == LINE:
                 out.feed(seg.x1, seg.z1)
             else:
-                out.arc(seg.x1, seg.z1, seg.cx, seg.cz, seg.kind)
+                out.arc(seg.x1, seg.z1, seg.cx, seg.cz, seg.kind, checked=i in corners)

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from ...canon import ops
+from ...errors import NgcSemanticError
 from .. import comp
+from ..handlers import motion
 from .profile import CCW
 
 if TYPE_CHECKING:
@@ -55,9 +58,14 @@ class Out:
         m.move(kind, end, m.label, m.line)
         m.state.pos = end
 
-    def arc(self, x: float, z: float, cx: float, cz: float, kind: int) -> None:
-        """G2 (kind CW) or G3 (CCW) to (x, z) around (cx, cz) in the XZ plane."""
+    def arc(self, x: float, z: float, cx: float, cz: float, kind: int,
+            checked: bool = False) -> None:
+        """G2 (kind CW) or G3 (CCW) to (x, z) around (cx, cz) in the XZ plane; ``checked``: its
+        radii at start and end are held to a programmed arc's tolerance first."""
         m = self.m
+        if checked:
+            start = m.state.pos if m.comp is None else m.comp.prog
+            check_radii(start[0], start[2], x, z, cx, cz, m.state.metric)
         if self.zeros is not None:
             x, z = self.zeros(x, z)
             cx, cz = self.zeros(cx, cz)
@@ -69,3 +77,21 @@ class Out:
         m.move(ops.ArcFeed, (z, x, cz, cx, rotation, end[1], end[3], end[4], end[5]), m.label,
                m.line)
         m.state.pos = end
+
+
+def check_radii(x0: float, z0: float, x1: float, z1: float, cx: float, cz: float,
+                metric: bool) -> None:
+    """An arc's radii at its start and end must agree as a programmed centre-format arc's do
+    (g-code.adoc G2/G3; rs274 holds G70's corner arcs to it)."""
+    r1 = math.hypot(z0 - cz, x0 - cx)
+    r2 = math.hypot(z1 - cz, x1 - cx)
+    abs_err = abs(r1 - r2)
+    tol = motion.CENTER_ARC_TOLERANCE_MM if metric else motion.CENTER_ARC_TOLERANCE_INCH
+    if abs_err <= tol:
+        return
+    rel_err = abs_err / max(r1, r2)
+    if abs_err > 100 * tol or rel_err > motion.CENTER_ARC_RELATIVE_TOLERANCE:
+        where = (f"start=(Z{z0:.4f},X{x0:.4f}) center=(Z{cz:.4f},X{cx:.4f}) "
+                 f"end=(Z{z1:.4f},X{x1:.4f}) r1={r1:.4f} r2={r2:.4f}")
+        raise NgcSemanticError("Radius to end of arc differs from radius to start: "
+                               f"{where} abs_err={abs_err:.4g} rel_err={rel_err * 100:.4f}%")
