@@ -36,6 +36,7 @@ import continued
 import contour
 import inch
 import lathe
+import lathejob
 import probing
 import spindlesync
 import splines
@@ -1664,6 +1665,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "state": state.gen_state,
     "continue": gen_continue,
     "lathe": lathe.gen_lathe,
+    "lathejob": lathejob.gen_lathejob,
 }
 
 
