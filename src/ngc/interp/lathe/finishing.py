@@ -81,7 +81,7 @@ def _entry(profile: Profile, start: tuple[float, float]
     return ((fx, sz) if (sx - fx) * way > 0 else start), (0.0, way)
 
 
-def _side(profile: Profile, entry: tuple[float, float], axis: tuple[float, float]) -> float:
+def pass_side(profile: Profile, entry: tuple[float, float], axis: tuple[float, float]) -> float:
     """+1: the profile moves to its left (in the (z, x) plane), -1: to its right.  ``axis``: the
     unit (z, x) direction the profile goes along."""
     moves = profile[1:]
@@ -263,7 +263,7 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
     if len(profile) < 2:
         return  # (no profile after the approach: nothing to follow)
     entry, axis = _entry(profile, start)
-    side = _side(profile, entry, axis)
+    side = pass_side(profile, entry, axis)
     first = profile[0]
     for k in range(passes, 0, -1):
         dist = (k - 1) * (d - e) / p + e

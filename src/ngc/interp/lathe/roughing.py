@@ -12,8 +12,9 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
   direction of the cut) is moved back to that point's ``b``.
 * The passes step from the start toward ``P0``: away from ``E`` on ``a`` (G71: toward larger X when
   E is below P0, else smaller; G72 the same on Z, a tie counting the other way).  If the profile
-  lies nowhere beyond the start that way there is nothing to rough: the tool feeds along the
-  profile as programmed, approach included.
+  lies nowhere beyond the start that way there is nothing to rough: the tool feeds from the
+  start along the profile moved D to the side G70 would move it from the start (G7x.1: each
+  move entered by a feed to its start).
 * Each level ``start + k*I`` before P0 (stepped ``I`` at a time): a traverse to where the level
   meets the approach, then (if the level meets the profile, or the closing line from E back to
   the start's level, past that point) a feed along ``b`` to the first such point, a traverse back
@@ -39,7 +40,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from .finishing import moved_with_corners
+from .finishing import moved_with_corners, pass_side
 from .offset import EPS, line_circle
 from .path import Out
 from .profile import CCW, CW, LINE, Seg, within
@@ -206,15 +207,22 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     if t * (sb - fb) > 0:
         sb = fb
         start = fr.xz(sa, sb)
-    far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
-    if far <= s * sa:  # nothing beyond the start: the profile as programmed
-        out.traverse(*start)
-        for seg in profile:
-            _emit(out, seg)
-        return
     # Left or right of the profile's direction in (z, x) is toward the start.
     side = -s * t if not fr.swap else s * t
     way = (t, 0.0) if not fr.swap else (0.0, t)
+    far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
+    if far <= s * sa:
+        # nothing beyond the start: the profile moved D to the side G70 would take from the
+        # start, fed from the start (G7x.1: each move entered by a feed to its start)
+        out.traverse(*start)
+        moved = moved_with_corners(profile, pass_side(profile, start, way), d, way,
+                                   roughing=True)[0]
+        approach_line = Seg(LINE, start[0], start[1], moved[0].x0, moved[0].z0)
+        for seg in [approach_line, *moved]:
+            if variant == 1:
+                out.feed(seg.x0, seg.z0)
+            _emit(out, seg)
+        return
     moved, corners = moved_with_corners(profile, side, d, way, roughing=True)
     first, last = moved[0], moved[-1]
     p0a = fr.ab(first.x0, first.z0)[0]
