@@ -141,7 +141,7 @@ def _crossing(a: Seg, b: Seg, mirror: float) -> tuple[float, float]:
         roots = [(fx - h * dx, fz - h * dz), (fx + h * dx, fz + h * dz)]
         return min(roots, key=lambda pt: math.hypot(pt[0] - a.x1, pt[1] - a.z1))
     r1 = math.hypot(a.x0 - a.cx, a.z0 - a.cz)
-    r2 = math.hypot(b.x1 - b.cx, b.z1 - b.cz)
+    r2 = math.hypot(b.x0 - b.cx, b.z0 - b.cz)
     dz, dx = b.cz - a.cz, b.cx - a.cx
     dist = math.hypot(dz, dx)
     along = (dist * dist + r1 * r1 - r2 * r2) / (2 * dist)
@@ -203,6 +203,8 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
         return list(moves), corners
     gz, gx = (abs(axis[0]), abs(axis[1])) if roughing else axis
     mirror = _mirror(profile, axis)
+    if roughing and axis[0] == 0.0:
+        mirror = -mirror  # (G72's frame: turned a quarter round)
     shifted = [_move(seg, side, d) for seg in moves]
     out: list[Seg] = []
     for i, seg in enumerate(shifted):

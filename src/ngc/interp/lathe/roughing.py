@@ -315,7 +315,9 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                     continue
                 if s * level >= s * deep - EPS:
                     break
-                cb = _level_hits(down, fr, level)[0]
+                hits = _level_hits(down, fr, level)
+                # (a level just short of an arc's end moved off its circle at a corner: the end)
+                cb = hits[0] if hits else fr.ab(down.x1, down.z1)[1]
                 x, z = fr.xz(level, cb)
                 # down along the profile (from a pocket's top: only where a line of the
                 # profile goes down from it)
