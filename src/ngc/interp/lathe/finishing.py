@@ -44,7 +44,7 @@ import math
 from ...errors import NgcSemanticError
 from .offset import EPS, _shift, intersections, tangent
 from .path import Out
-from .profile import CCW, CW, LINE, NOT_MONOTONIC, PARALLEL, Profile, Seg, steps
+from .profile import CCW, CW, LINE, NOT_MONOTONIC, PARALLEL, Profile, Seg, steps, within
 
 # an outside corner whose moved ends lie closer than this along the profile's axis is cut like
 # an inside one, not rounded
@@ -139,7 +139,11 @@ def _crossing(a: Seg, b: Seg, mirror: float) -> tuple[float, float]:
             return fx, fz
         h = math.sqrt(h2 / n2)
         roots = [(fx - h * dx, fz - h * dz), (fx + h * dx, fz + h * dz)]
-        return min(roots, key=lambda pt: math.hypot(pt[0] - a.x1, pt[1] - a.z1))
+        # a crossing on the arc itself first (the arc bulging across the line meets it twice,
+        # as far from the corner either way), then the nearer to where ``a`` ends
+        return min(roots, key=lambda pt: (not within(arc, math.atan2(pt[0] - arc.cx,
+                                                                     pt[1] - arc.cz)),
+                                          math.hypot(pt[0] - a.x1, pt[1] - a.z1)))
     r1 = math.hypot(a.x0 - a.cx, a.z0 - a.cz)
     r2 = math.hypot(b.x0 - b.cx, b.z0 - b.cz)
     dz, dx = b.cz - a.cz, b.cx - a.cx
