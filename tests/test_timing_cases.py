@@ -6,6 +6,9 @@ it (``motion_time``, measured with the ``lcnc-timing`` tool on the machine of
 
 * ``tests/timing/cases``: programs made by ``tests/timing/generate.py`` (fixed seeds), measured by
   ``tests/timing/measure.py`` into ``tests/timing/cases/reference.json``;
+* ``tests/timing/features``: programs made by ``tests/timing/features.py``, each a behaviour shop
+  programs lean on (feeds on unit-switching lines, no G61/G64, adaptive clearing with feed
+  changes, thread milling, coves, NURBS), measured the same way;
 * ``tests/timing/joins``: small programs of joins with arcs and helices and of short lines between
   blends, the measurements the planner's rules for them were found from (``docs/planner.md``);
 * ``../shared/timing``: the reference set beside the repository (skipped where it is absent).
@@ -33,6 +36,7 @@ from ngc.planner.timing import time_text
 HERE = Path(__file__).resolve().parent
 CASES = HERE / "timing" / "cases"
 JOINS = HERE / "timing" / "joins"
+FEATURES = HERE / "timing" / "features"
 SHARED = HERE.parents[1] / "shared" / "timing"
 TOLERANCE = 0.01  # per program, relative
 MEDIAN_TOLERANCE = 0.005
@@ -41,6 +45,13 @@ MEDIAN_TOLERANCE = 0.005
 OVER_CASES: dict[str, float] = {
 }
 OVER_SHARED: dict[str, float] = {}
+OVER_FEATURES: dict[str, float] = {
+    # a short link between two arcs at a high feed: LinuxCNC slows to 6.2-6.7 mm/s at the
+    # corner, the blend rule gives 9.9
+    "10_adaptive_arcs.ngc": -0.0162,
+    # within 1 %, over 0.5 %: G5 curves run as lines, LinuxCNC runs them as arcs
+    "17_nurbs_g5_p.ngc": -0.0076,
+}
 OVER_JOINS: dict[str, float] = {
     "31_line_arc_135.ngc": -0.0135,  # the second join (arc into the line) is not fitted
     "38_arc_arc_into_corner.ngc": -0.0143,  # measured 33.96 mm/s where the rule gives 40.55
@@ -90,8 +101,8 @@ def _table(folder: Path, what: dict[str, str]) -> str:
 
 
 @functools.cache
-def _generator() -> Any:
-    spec = importlib.util.spec_from_file_location("timing_generate", HERE / "timing" / "generate.py")
+def _generator(name: str = "generate") -> Any:
+    spec = importlib.util.spec_from_file_location(f"timing_{name}", HERE / "timing" / f"{name}.py")
     assert spec and spec.loader
     module = importlib.util.module_from_spec(spec)
     sys.modules[spec.name] = module  # its dataclasses look their module up
@@ -106,6 +117,10 @@ def _what_cases() -> dict[str, str]:
     return {c.file: c.what for c in _generator().CASES}
 
 
+def _what_features() -> dict[str, str]:
+    return {name: what for name, (what, _) in _generator("features").files().items()}
+
+
 def _what_shared() -> dict[str, str]:
     return {e["file"]: ", ".join(e.get("kinds", [])) for e in _reference(SHARED)}
 
@@ -117,6 +132,7 @@ def _what_joins() -> dict[str, str]:
 # name: (folder, programs known to be over 1 %, what each program exercises)
 SETS: dict[str, tuple[Path, dict[str, float], Callable[[], dict[str, str]]]] = {
     "cases": (CASES, OVER_CASES, _what_cases),
+    "features": (FEATURES, OVER_FEATURES, _what_features),
     "joins": (JOINS, OVER_JOINS, _what_joins),
     "shared": (SHARED, OVER_SHARED, _what_shared),  # no programs where ../shared is absent
 }
@@ -128,7 +144,13 @@ def test_cases_are_what_the_generator_makes() -> None:
     assert made == files
 
 
-@pytest.mark.parametrize("folder", [CASES, JOINS], ids=["cases", "joins"])
+def test_features_are_what_the_generator_makes() -> None:
+    made = _generator("features").generate()
+    files = {p.name: p.read_text() for p in FEATURES.glob("[0-9]*.ngc")}
+    assert made == files
+
+
+@pytest.mark.parametrize("folder", [CASES, FEATURES, JOINS], ids=["cases", "features", "joins"])
 def test_every_program_is_measured(folder: Path) -> None:
     measured = {e["file"] for e in _reference(folder)}
     assert measured == {p.name for p in folder.glob("[0-9]*.ngc")}
