@@ -139,11 +139,11 @@ def _crossing(a: Seg, b: Seg, mirror: float) -> tuple[float, float]:
             return fx, fz
         h = math.sqrt(h2 / n2)
         roots = [(fx - h * dx, fz - h * dz), (fx + h * dx, fz + h * dz)]
-        # a crossing on the arc itself first (the arc bulging across the line meets it twice,
-        # as far from the corner either way), then the nearer to where ``a`` ends
-        return min(roots, key=lambda pt: (not within(arc, math.atan2(pt[0] - arc.cx,
-                                                                     pt[1] - arc.cz)),
-                                          math.hypot(pt[0] - a.x1, pt[1] - a.z1)))
+        # the nearer to where ``a`` ends; an arc ``a`` first where it crosses the line itself
+        # (bulging across the line it meets it twice, as far from its end either way)
+        return min(roots, key=lambda pt: (
+            arc is a and not within(arc, math.atan2(pt[0] - arc.cx, pt[1] - arc.cz)),
+            math.hypot(pt[0] - a.x1, pt[1] - a.z1)))
     r1 = math.hypot(a.x0 - a.cx, a.z0 - a.cz)
     r2 = math.hypot(b.x0 - b.cx, b.z0 - b.cz)
     dz, dx = b.cz - a.cz, b.cx - a.cx

@@ -122,6 +122,10 @@ def _facing_zeros(x_round: bool, z_by_x: bool) -> Callable[[float, float], tuple
 # level through an arc's top meets it at a tangent, known to about the square root of EPS)
 _TOUCH = 1e-6
 
+# an arc climbing no more than this to its top is not cut there (rs274 leaves whole an arc
+# whose top lies 1.5e-8 above its start, and cuts one climbing 4e-5)
+_NO_CLIMB = 1e-6
+
 MOVE, CORNER, CONT = 0, 1, 2  # a piece of the walk: a move, an arc rounding a corner, the
 # rest of an arc cut where it turns
 
@@ -140,6 +144,8 @@ def _split(profile: list[Seg], corners: set[int], fr: _Frame, s: float
         if seg.kind == LINE or not within(seg, top):
             continue
         px, pz = _extreme_point(seg, fr, -s)
+        if abs(fr.ab(px, pz)[0] - fr.ab(seg.x0, seg.z0)[0]) <= _NO_CLIMB:
+            continue
         out[-1] = seg._replace(x1=px, z1=pz)
         out.append(seg._replace(x0=px, z0=pz))
         tags.append(CONT)
