@@ -54,8 +54,9 @@ def record(m: Machine, r: Words) -> None:
     if st.lathe_diameter:
         u /= 2.0
     if st.absolute:
-        x1 = w.get("x", x0) + u
-        z1 = w.get("z", z0) + w.get("w", 0.0)
+        # (U and W add only when given: a Z of -0 stays -0, as rs274 shows it)
+        x1 = w.get("x", x0) + u if "u" in w else w.get("x", x0)
+        z1 = w.get("z", z0) + w["w"] if "w" in w else w.get("z", z0)
     else:
         x1 = x0 + w.get("x", 0.0) + u
         z1 = z0 + w.get("w", 0.0) + w.get("z", 0.0)

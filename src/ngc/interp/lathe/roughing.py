@@ -94,12 +94,13 @@ def _on_arc(seg: Seg, fr: _Frame, pa: float, pb: float) -> bool:
 
 def _turning_zeros(flip_x: bool, flip_z: bool) -> Callable[[float, float], tuple[float, float]]:
     """G71's signs of zero: rs274 turns an axis round in its frame when the passes step up X or
-    cut toward +Z, and a coordinate of 0 comes back from such an axis as -0."""
+    cut toward +Z, and a coordinate of 0 comes back from such an axis as -0, from the others as
+    +0 (a -0 of the program too)."""
     def zeros(x: float, z: float) -> tuple[float, float]:
-        if flip_x and x == 0.0:
-            x = -0.0
-        if flip_z and z == 0.0:
-            z = -0.0
+        if x == 0.0:
+            x = -0.0 if flip_x else 0.0
+        if z == 0.0:
+            z = -0.0 if flip_z else 0.0
         return x, z
     return zeros
 
@@ -108,12 +109,12 @@ def _facing_zeros(x_round: bool, z_by_x: bool) -> Callable[[float, float], tuple
     """G72's signs of zero: rs274's frame is turned a quarter round, and what comes back as 0
     takes its sign from that turn.  Cutting toward +X an X of 0 prints -0; where the passes step
     the way the cut goes round (down Z cutting toward -X, up Z toward +X) a Z of 0 prints -0
-    where X is positive, +0 where it is not."""
+    where X is positive, +0 where it is not; every other 0 prints +0 (a -0 of the program too)."""
     def zeros(x: float, z: float) -> tuple[float, float]:
-        if x_round and x == 0.0:
-            x = -0.0
-        if z_by_x and z == 0.0:
-            z = -0.0 if x > 0.0 else 0.0
+        if x == 0.0:
+            x = -0.0 if x_round else 0.0
+        if z == 0.0:
+            z = -0.0 if z_by_x and x > 0.0 else 0.0
         return x, z
     return zeros
 
