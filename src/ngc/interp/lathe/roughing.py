@@ -301,6 +301,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         _bridged(out, fr, walk, tags, ends, s, t)
         return
     top: float | None = None  # where the pocket being walked down began
+    from_top: list[float] = []  # G7x.2's levels from there, stepped I at a time as rs274 does
     # G7x.2 leaves uncut a pocket the profile goes down into from its first point
     uncut = False
     for i, (seg, tag) in enumerate(zip(walk, tags, strict=True)):
@@ -314,9 +315,15 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
             # pocket's top down, the others: on the start's grid)
             if top is None:
                 top = a0
+                from_top[:] = [top]
             k = 0
             while True:
-                level = top + s * k * inc if variant == 2 else turn * turned(k)
+                if variant == 2:
+                    while len(from_top) <= k:
+                        from_top.append(from_top[-1] + s * inc)
+                    level = from_top[k]
+                else:
+                    level = turn * turned(k)
                 if s * level < s * a0 - EPS:
                     k += 1
                     continue
