@@ -162,7 +162,7 @@ def _arc_end_at_corner(arc: Seg, corner: Seg) -> tuple[float, float]:
     moved start's radius, meets the circle about the programmed corner through its moved end
     (the point on the line between their centres where they miss each other, as a
     centre-format arc whose end lies beyond its start's circle makes them: measured at 1000
-    times the size); of two crossings, the one nearer to the moved end."""
+    times the size); of two crossings, the one farther along the arc."""
     r1 = math.hypot(arc.x0 - arc.cx, arc.z0 - arc.cz)
     r2 = math.hypot(arc.x1 - corner.x0, arc.z1 - corner.z0)
     dx, dz = corner.x0 - arc.cx, corner.z0 - arc.cz
@@ -174,7 +174,13 @@ def _arc_end_at_corner(arc: Seg, corner: Seg) -> tuple[float, float]:
         return mx, mz
     h = math.sqrt(h2) / dist
     points = ((mx - h * dz, mz + h * dx), (mx + h * dz, mz - h * dx))
-    return min(points, key=lambda pt: math.hypot(pt[0] - arc.x1, pt[1] - arc.z1))
+    start = math.atan2(arc.x0 - arc.cx, arc.z0 - arc.cz)
+    way = 1.0 if arc.kind == CCW else -1.0
+
+    def travel(pt: tuple[float, float]) -> float:
+        return (way * (math.atan2(pt[0] - arc.cx, pt[1] - arc.cz) - start)) % (2 * math.pi)
+
+    return max(points, key=travel)
 
 
 def _mirror(profile: Profile, axis: tuple[float, float]) -> float:
