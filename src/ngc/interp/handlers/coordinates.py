@@ -159,8 +159,9 @@ def _l20_origin(it: Machine, values: dict[int, float], index: int) -> dict[int, 
     rs274 finds the current point in that system from the system's origin and the G92/G52
     offset as their parameters hold them (through inches: a value in inches may come back a
     little off), then moves the origin by the difference: ``(origin + point) - value``, in that
-    order, which decides the last bit.  Axes not given keep their current coordinate; with a
-    rotation, giving X or Y moves the origin in both X and Y.
+    order, which decides the last bit.  X and Y are set so always, those not given to keep their
+    current coordinate (which moves their origin by a last bit now and then); other axes only
+    when given.
     """
     st = it.state
     machine = to_machine(st, st.pos, tlo=False)  # the origin is set without the tool offset
@@ -169,16 +170,19 @@ def _l20_origin(it: Machine, values: dict[int, float], index: int) -> dict[int, 
     rot = numbered[base + 9]
     origin = from_parameters(st, numbered[base:base + AXES])
     offset = _stored_g92(it) if st.g92_applied else [0.0] * AXES
-    out = {i: (origin[i] + (machine[i] - origin[i] - offset[i])) - v
-           for i, v in values.items() if not rot or i > 1}
-    if rot and (0 in values or 1 in values):
+    here = [machine[i] - origin[i] - offset[i] for i in range(AXES)]
+    # X and Y are set again always (those not given to their current coordinate), the others
+    # when given
+    out = {i: (origin[i] + here[i]) - v for i, v in values.items() if i > 1}
+    point = (here[0], here[1])
+    there = (values.get(0, point[0]), values.get(1, point[1]))
+    if rot:
         # the same in the rotated system: (origin + rotated point) - rotated new point
         x, y = rotate(machine[0] - origin[0], machine[1] - origin[1], -rot)
-        here = (x - offset[0], y - offset[1])
-        there = (values.get(0, here[0]), values.get(1, here[1]))
-        here = rotate(*here, rot)
-        there = rotate(*there, rot)
-        out[0], out[1] = (origin[0] + here[0]) - there[0], (origin[1] + here[1]) - there[1]
+        point = (x - offset[0], y - offset[1])
+        there = rotate(values.get(0, point[0]), values.get(1, point[1]), rot)
+        point = rotate(*point, rot)
+    out[0], out[1] = (origin[0] + point[0]) - there[0], (origin[1] + point[1]) - there[1]
     return out
 
 
