@@ -19,7 +19,7 @@ def to_machine(st: State, prog: Vec, tlo: bool = True, rotary: bool = False) -> 
 
     ``rotary``: with the rotary axes' tool length offset too, which rs274 adds where it reads a
     machine position (G28.1/G30.1, #<_abs_a>, G10 L10/L11) though :func:`to_program` does not
-    take it off; not where it goes there and back (G53's axes not given, G54-G59.3)."""
+    take it off; not where it goes there and back (G54-G59.3)."""
     p = [prog[i] + st.g92[i] for i in range(AXES)]
     if st.rotation:
         p[0], p[1] = rotate(p[0], p[1], st.rotation)
@@ -36,6 +36,29 @@ def to_program(st: State, machine: Vec, tlo: Sequence[float] | None = None) -> V
     # Rotated even by 0 degrees: rs274 does, which decides the sign of a zero (G53 X-0).
     p[0], p[1] = rotate(p[0], p[1], -st.rotation)
     return [p[i] - st.g92[i] for i in range(AXES)]
+
+
+def machine_target(st: State, prog: Vec, given: dict[int, float]) -> Vec:
+    """The program point of a G53 move: the axes ``given`` (index -> value) are machine
+    coordinates, the others stay.
+
+    As rs274 computes it, to the last bit: an axis given loses the G5x origin and the tool
+    length offset, then (X and Y turned back by the rotation) the G92 offset; X and Y not given
+    get the G92 offset and the rotation and lose them again (which may move them by a last bit
+    or change the sign of a zero), the other axes not given stay as they are."""
+    t = st.tlo
+    out = list(prog)
+    for i, v in given.items():
+        if i > 1:
+            out[i] = v - st.g5x[i] - (t[i] if i < 3 else 0.0) - st.g92[i]
+    x, y = rotate(prog[0] + st.g92[0], prog[1] + st.g92[1], st.rotation)
+    if 0 in given:
+        x = given[0] - st.g5x[0] - t[0]
+    if 1 in given:
+        y = given[1] - st.g5x[1] - t[1]
+    x, y = rotate(x, y, -st.rotation)
+    out[0], out[1] = x - st.g92[0], y - st.g92[1]
+    return out
 
 
 def rotate(x: float, y: float, degrees: float) -> tuple[float, float]:

@@ -38,9 +38,8 @@ def end_point(it: Machine, w: dict[str, float], machine: bool) -> list[float]:
     st = it.state
     pos = st.pos if it.comp is None else it.comp.prog  # compensation: the programmed point
     if machine:
-        current = frames.to_machine(st, pos)
-        target = [w.get(a, current[i]) for i, a in enumerate("xyzabc")]
-        return frames.to_program(st, target)
+        given = {i: w[a] for i, a in enumerate("xyzabc") if a in w}
+        return frames.machine_target(st, pos, given)
     if "@" in w or "^" in w:
         return polar_end(pos, w, st.absolute)
     if st.absolute:
