@@ -34,6 +34,7 @@ from collections.abc import Callable
 
 import continued
 import contour
+import flow
 import inch
 import lathe
 import lathejob
@@ -1666,6 +1667,7 @@ KINDS: dict[str, Callable[[int], str]] = {
     "continue": gen_continue,
     "lathe": lathe.gen_lathe,
     "lathejob": lathejob.gen_lathejob,
+    "flow": flow.gen_flow,
 }
 
 

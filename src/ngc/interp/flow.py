@@ -92,6 +92,13 @@ _LEAPS: dict[str, tuple[str, ...]] = {
     "repeat": ("endrepeat",),
 }
 
+# The keywords that end a skip for their label wherever it looks for another: the line runs (an
+# ``if`` or a ``while`` there is a second use of the label, an ``else`` of a loop's label is
+# refused, a ``do`` goes on).  ``break`` and ``continue`` of the label are checked and passed;
+# subroutine lines of the label are passed.
+_STRAYS = frozenset(("if", "elseif", "else", "endif", "while", "endwhile", "do", "repeat",
+                     "endrepeat"))
+
 # Skipping modes.
 BRANCH = 0  # a false condition, a break: control lines must be well formed
 DEFINE = 1  # a definition passed over: only nested definitions are noticed
@@ -100,17 +107,19 @@ SEEK = 2  # a search for a subroutine to call
 
 class Mark:
     """Where a skip stopped: the line, its o-word and its source text; and the labels of the
-    ``break`` lines the skip passed over (rs274 takes note of them, see ``Flow.broken_while``)."""
+    ``break`` lines of its label the skip passed over (see ``Flow.broken_while``)."""
 
-    __slots__ = ("breaks", "computed", "line", "oword", "source")
+    __slots__ = ("breaks", "computed", "line", "oword", "source", "stray")
 
     def __init__(self, line: int, oword: OWord, source: str, breaks: tuple[str, ...] = (),
-                 computed: bool = False) -> None:
+                 computed: bool = False, stray: bool = False) -> None:
         self.line = line
         self.oword = oword
         self.source = source
         self.breaks = breaks
         self.computed = computed
+        # The skip ended at a line of its label with another keyword, which runs next.
+        self.stray = stray
 
 
 class Body:
@@ -211,11 +220,13 @@ class Body:
 
 
 class Sub:
-    """A defined subroutine: the body holding it and the line of its ``sub`` (or ``o100``)."""
+    """A defined subroutine: its name, the body holding it and the line of its ``sub`` (or
+    ``o100``)."""
 
-    __slots__ = ("body", "fanuc", "start")
+    __slots__ = ("body", "fanuc", "name", "start")
 
-    def __init__(self, body: Body, start: int, fanuc: bool = False) -> None:
+    def __init__(self, name: str, body: Body, start: int, fanuc: bool = False) -> None:
+        self.name = name
         self.body = body
         self.start = start
         self.fanuc = fanuc
@@ -224,7 +235,7 @@ class Sub:
 class Frame:
     """One scope being run: the main program or one call of a subroutine."""
 
-    __slots__ = ("body", "labels", "open_whiles", "pc", "repeats", "saved", "sub")
+    __slots__ = ("body", "labels", "pc", "repeats", "saved", "sub")
 
     def __init__(self, body: Body, pc: int, sub: Sub | None) -> None:
         self.body = body
@@ -232,8 +243,6 @@ class Frame:
         self.sub = sub
         # label -> (keyword, line) of each control construct run in this scope.
         self.labels: dict[str, tuple[str, int]] = {}
-        # The labels of the while loops under way in this scope.
-        self.open_whiles: set[str] = set()
         self.saved: list[float] = []
         # M98 L: further runs of a Fanuc-style program after this one.
         self.repeats = 0
@@ -287,6 +296,8 @@ class Flow:
         # A break left a while loop, or a skip passed over a break of a while loop under way: the
         # next do loop's closing while does not loop back (rs274 2.9.0~pre1 does so).
         self.broken_while = False
+        # A continue is under way: the next endwhile or endrepeat a skip reaches loops back.
+        self.continuing = False
         self.resumed: tuple[Frame, int, Body, int] | None = None
         # The line a skip failed at (see ``skip``), until a run going on after it reads past it.
         self.failed_at: int | None = None
@@ -524,7 +535,6 @@ class Flow:
                 if ow.label != label and ow.keyword in _LEAPS:
                     leap = self.leap(body, number, ow.keyword, label)
                     if leap is not None:
-                        breaks.extend(leap.breaks)
                         number = leap.line - 1  # the construct's end is read as usual
                         continue
             try:
@@ -543,10 +553,22 @@ class Flow:
                     st = it.machine.state
                     st.value, st.value_returned = (value[0], 1.0) if value else (0.0, 0.0)
                     return Mark(number, ow, source)
-                if ow.keyword in kinds and passed == label:
+                if passed != label:
+                    continue
+                if ow.keyword in kinds:
                     return Mark(number, ow, source, tuple(breaks), computed)
-                if ow.keyword == "break" and mode == BRANCH:
-                    breaks.append(passed)
+                if mode != BRANCH:
+                    continue
+                if ow.keyword in _STRAYS:
+                    return Mark(number, ow, source, tuple(breaks), computed, stray=True)
+                if ow.keyword in ("break", "continue"):
+                    bound = f.labels.get(label)
+                    if bound is not None and bound[0] not in _LOOPS:
+                        raise NgcSemanticError(
+                            f"{number}: no matching while/do label: '{source}' "
+                            f"(found '{bound[0]}' in line {bound[1]})")
+                    if ow.keyword == "break":
+                        breaks.append(passed)
             except NgcError as err:
                 raise err.locate(file=body.file, line=number, source=source) from None
 
@@ -584,9 +606,8 @@ class Flow:
             found = self.skip(f, start, label, kinds, BRANCH)
             if ow.label is not None and not found.computed:
                 self.jumps[key] = found
-        for passed in found.breaks:
-            if passed in f.open_whiles or (passed == label and kinds[0] == "endwhile"):
-                self.broken_while = True
+        if found.breaks:
+            self.broken_while = True
         return found
 
     # -- conditionals -------------------------------------------------------------------------
@@ -596,11 +617,23 @@ class Flow:
         if not self.condition(ow):
             self.next_branch(f, block.line, ow, label)
 
+    def past(self, f: Frame, start: int, ow: OWord, label: str, kinds: tuple[str, ...]
+             ) -> Mark | None:
+        """``jump`` and go on after the line found; a stray line of the label found instead runs
+        next (None)."""
+        found = self.jump(f, start, ow, label, kinds)
+        if found.stray:
+            f.pc = found.line
+            return None
+        f.pc = found.line + 1
+        return found
+
     def next_branch(self, f: Frame, start: int, ow: OWord, label: str) -> None:
         """A false condition: on to the next ``elseif`` that holds, the ``else``, or the ``endif``."""
         while True:
-            found = self.jump(f, start, ow, label, ("elseif", "else", "endif"))
-            f.pc = found.line + 1
+            found = self.past(f, start, ow, label, ("elseif", "else", "endif"))
+            if found is None:
+                return
             other = found.oword
             if other.keyword != "elseif":
                 return
@@ -618,12 +651,12 @@ class Flow:
         self.lookup(f, block, label, ("if",), "'if' label")
         if ow.args:
             self.condition(ow)  # rs274 evaluates it even though the branch is over
-        f.pc = self.jump(f, block.line, ow, label, ("endif",)).line + 1
+        self.past(f, block.line, ow, label, ("endif",))
 
     def _else(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
         self.lookup(f, block, label, ("if",), "'if' label")
-        f.pc = self.jump(f, block.line, ow, label, ("endif",)).line + 1
+        self.past(f, block.line, ow, label, ("endif",))
 
     def _endif(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
@@ -631,8 +664,10 @@ class Flow:
         if bound is None:
             raise NgcSemanticError(_quote(block, "undefined O-word label"))
         if bound[0] != "if":
+            # rs274 names the label as it keys it: after the name of the subroutine it is in.
+            scope = f.sub.name if f.sub is not None else ""
             raise NgcSemanticError(
-                f"{block.line}: no matching label: '#{label}' (found '{bound[0]}' in line "
+                f"{block.line}: no matching label: '{scope}#{label}' (found '{bound[0]}' in line "
                 f"{bound[1]}): '{block.source}'")
 
     # -- loops ---------------------------------------------------------------------------------
@@ -648,11 +683,19 @@ class Flow:
             return
         if bound is None or bound[1] != block.line:
             self.bind(f, block, label, "while")
-        if self.condition(ow):
-            f.open_whiles.add(label)
-        else:
-            f.open_whiles.discard(label)
-            f.pc = self.jump(f, block.line, ow, label, ("endwhile",)).line + 1
+        if not self.condition(ow):
+            self.end_loop(f, block.line, ow, label, "endwhile", block.line)
+
+    def end_loop(self, f: Frame, start: int, ow: OWord, label: str, end: str, top: int) -> None:
+        """Skip to the loop's ``end`` line and run it as rs274 runs an ``endwhile`` or
+        ``endrepeat`` that a skip reached: with a ``continue`` noted it loops back to ``top`` (the
+        note is done), else the loop is over.  (A ``continue`` of a do loop is noted and never
+        done, so the next ``break`` or end of a while or repeat loop loops back once more.)"""
+        found = self.past(f, start, ow, label, (end,))
+        if found is not None and self.continuing:
+            self.continuing = False
+            self.again()
+            f.pc = top
 
     def _endwhile(self, f: Frame, block: Block, ow: OWord) -> None:
         label = ow.label if ow.label is not None else self.label(ow)
@@ -663,7 +706,9 @@ class Flow:
         f.pc = bound[1]
 
     def _do(self, f: Frame, block: Block, ow: OWord) -> None:
-        self.bind(f, block, self.label(ow), "do")
+        # rs274 binds a label to the first ``do`` that uses it and checks nothing: a later ``do``
+        # of the label goes on, and its ``while`` loops back to the first one.
+        f.labels.setdefault(self.label(ow), ("do", block.line))
 
     def _repeat(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
@@ -678,7 +723,7 @@ class Flow:
             self.active[key] = left - 1
         else:
             self.active.pop(key, None)
-            f.pc = self.jump(f, block.line, ow, label, ("endrepeat",)).line + 1
+            self.end_loop(f, block.line, ow, label, "endrepeat", block.line)
 
     def _endrepeat(self, f: Frame, block: Block, ow: OWord) -> None:
         line = self.lookup(f, block, self.label(ow), ("repeat",))[1]
@@ -687,23 +732,26 @@ class Flow:
 
     def _break(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
-        keyword, _ = self.lookup(f, block, label, _LOOPS, "while/do label")
-        end = ("endwhile",) if keyword == "while" else ("while",)
+        keyword, top = self.lookup(f, block, label, _LOOPS, "while/do label")
+        # rs274 notes the break until the closing ``while`` of a do loop runs, which then does
+        # not loop back: the do loop's own (the break's skip ends on it), or, after a while loop,
+        # the next one.
+        self.broken_while = True
         if keyword == "while":
-            f.open_whiles.discard(label)
-            self.broken_while = True
-        f.pc = self.jump(f, block.line, ow, label, end).line + 1
+            self.end_loop(f, block.line, ow, label, "endwhile", top)
+        else:
+            f.pc = self.jump(f, block.line, ow, label, ("while",)).line
 
     def _continue(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
         keyword, line = self.lookup(f, block, label, _LOOPS, "while/do label")
+        self.continuing = True
         if keyword == "while":
-            self.again()
-            f.pc = line
+            self.end_loop(f, block.line, ow, label, "endwhile", line)
         else:
-            # rs274 goes to the do's ``while`` and runs it as the start of a new loop: a true
-            # condition carries on after it, out of the do loop.
-            f.pc = self.jump(f, block.line, ow, label, ("while",)).line + 1
+            # rs274 skips to the do's ``while`` and runs it: it loops back when its condition
+            # holds, unless the skip passed a ``break`` of the loop (or a stray line ran).
+            f.pc = self.jump(f, block.line, ow, label, ("while",)).line
 
     # -- subroutines ---------------------------------------------------------------------------
     def _sub(self, f: Frame, block: Block, ow: OWord) -> None:
@@ -721,7 +769,7 @@ class Flow:
                 f"File:{file} line:{block.line} redefining sub: o|{label}| already defined in "
                 f"file:{known.body.file}")
         end = self.skip(f, block.line, label, ("endsub",), DEFINE)
-        self.subs[label] = Sub(f.body, block.line)
+        self.subs[label] = Sub(label, f.body, block.line)
         f.pc = end.line + 1
 
     def _call(self, f: Frame, block: Block, ow: OWord) -> None:
@@ -763,7 +811,7 @@ class Flow:
         else:
             body = f.body
             found = self.skip(f, block.line, label, ("sub", PROGRAM), SEEK, block)
-        sub = Sub(body, found.line, fanuc=found.oword.keyword == PROGRAM)
+        sub = Sub(label, body, found.line, fanuc=found.oword.keyword == PROGRAM)
         self.subs[label] = sub
         return sub
 

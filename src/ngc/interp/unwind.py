@@ -46,4 +46,3 @@ def unwind(flow: Flow) -> None:
     flow.active.clear()
     flow.resumed = None  # as if no call had returned: ``return`` in the main program is refused
     main.labels.clear()
-    main.open_whiles.clear()
