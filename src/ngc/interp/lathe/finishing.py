@@ -113,12 +113,13 @@ def _move(seg: Seg, side: float, d: float) -> Seg:
                         x1=seg.cx + (seg.x1 - seg.cx) * k, z1=seg.cz + (seg.z1 - seg.cz) * k)
 
 
-def _crossing(a: Seg, b: Seg, mirror: float) -> tuple[float, float]:
+def _crossing(a: Seg, b: Seg, mirror: float, r_arc: float = 0.0) -> tuple[float, float]:
     """Where the carriers of two moved segments, ``a`` then ``b``, meet, as rs274 picks it:
     a line and a circle at the crossing nearer to where ``a`` ends; two circles at the crossing
-    right of the line from the first centre to the second (in the (z, x) plane).  An arc's
-    circle has the radius of its end away from the corner (the two differ a little for a
-    centre-format arc).  Carriers that miss each other (a corner close to tangent) meet where
+    right of the line from the first centre to the second (in the (z, x) plane).  The circle
+    of an arc beside a line has the radius ``r_arc`` (see ``_own_end_radius``), two arcs the
+    radii of their moved starts (fitted on near-tangent corners; the radii differ a little for
+    a centre-format arc).  Carriers that miss each other (a corner close to tangent) meet where
     they come closest."""
     if a.kind == LINE and b.kind == LINE:
         points = intersections(a, b)
@@ -127,9 +128,7 @@ def _crossing(a: Seg, b: Seg, mirror: float) -> tuple[float, float]:
         return points[0]
     if a.kind == LINE or b.kind == LINE:
         line, arc = (a, b) if a.kind == LINE else (b, a)
-        # the radius at the arc's end (what rs274 shows where the two differ, a centre-format
-        # arc within its tolerance)
-        r = math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz)
+        r = r_arc
         dx, dz = line.x1 - line.x0, line.z1 - line.z0
         n2 = dx * dx + dz * dz
         t = ((arc.cx - line.x0) * dx + (arc.cz - line.z0) * dz) / n2
@@ -155,6 +154,15 @@ def _crossing(a: Seg, b: Seg, mirror: float) -> tuple[float, float]:
     # right of (dz, dx) in (z, x) is (dx, -dz), in rs274's frame (``mirror``)
     h *= mirror
     return mx - h * dz / dist, mz + h * dx / dist
+
+
+def _own_end_radius(arc: Seg, side: float, d: float) -> float:
+    """The radius of an arc's programmed end moved ``d`` to ``side`` along its own radius: its
+    circle where it meets a line before it (an arc before a line meets it at its moved, scaled,
+    end's radius); the two differ where a centre-format arc's end lies off its start's circle,
+    and near-tangent corners show which rs274 takes."""
+    toward_centre = side if arc.kind == CCW else -side
+    return math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz) - toward_centre * d
 
 
 def _arc_end_at_corner(arc: Seg, corner: Seg) -> tuple[float, float]:
@@ -247,7 +255,12 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
         if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS:
             out.append(seg)  # (slanted lines in line, joined as G71/G72 join them)
             continue
-        px, pz = _crossing(prev, seg, mirror)
+        r_arc = 0.0
+        if prev.kind == LINE and seg.kind != LINE:
+            r_arc = _own_end_radius(moves[i], side, d)
+        elif prev.kind != LINE and seg.kind == LINE:
+            r_arc = math.hypot(shifted[i - 1].x1 - prev.cx, shifted[i - 1].z1 - prev.cz)
+        px, pz = _crossing(prev, seg, mirror, r_arc)
         if (roughing and prev.kind == LINE and len(out) > 1
                 and (px - prev.x0) * (prev.x1 - prev.x0) + (pz - prev.z0) * (prev.z1 - prev.z0) < 0):
             # a line shorter than the distance turns round between its corners: G71/G72 leave
@@ -255,7 +268,7 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
             corners.discard(len(out) - 1)
             out.pop()
             prev = out[-1]
-            px, pz = _crossing(prev, seg, mirror)
+            px, pz = _crossing(prev, seg, mirror, r_arc)
         out[-1] = prev._replace(x1=px, z1=pz)
         out.append(seg._replace(x0=px, z0=pz))
     return out, corners
