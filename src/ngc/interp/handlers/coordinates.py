@@ -237,8 +237,8 @@ def g92_reset(it: Machine, code: int) -> None:
         if code == 921:
             for i in range(AXES):
                 numbered[G92_OFFSET + i] = 0.0
-    for i in range(AXES):
-        st.pos[i] += st.g92[i] - new[i]
+    for i in range(AXES):  # (point + old) - new, in that order (G52 is point + (old - new))
+        st.pos[i] = (st.pos[i] + st.g92[i]) - new[i]
     st.g92 = new
     emit_g92(it)
 
