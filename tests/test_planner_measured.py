@@ -60,6 +60,11 @@ CASES: list[tuple[str, str, float]] = [
     ("arc_into_corner_g64_p_feeds", loops("G64 P0.02", 600, 4000), 9.190),
     ("line_into_quarter_circle_g64_p", HEAD + "G64 P0.02\nG0 X12.9289 Y27.0711\n"
      "G1 X20 Y20 F3000\nG3 X25 Y25 I0 J5\n", 0.884),
+    # under G64 without P the blend beside an arc that curves into the corner reaches at most a
+    # twelfth of the arc's length from it (0.45 mm links: a quarter of a link)
+    ("arc_into_corner_g64", loops("G64", 1100, 2800), 6.485),
+    ("line_into_quarter_circle_g64", HEAD + "G64\nG0 X15.5271 Y28.9439\n"
+     "G1 X20 Y20 F3000\nG3 X25 Y25 I0 J5\n", 0.863),
     # a cove: XZ half circles joined by 1 mm steps along Y; under G64 P the step across the
     # arcs' plane still keeps a parabolic blend, as without P
     ("cove_g18_g64_p", HEAD + "G64 P0.02\nG0 X0 Y0 Z5\nG1 Z0 F1500\nG18\n"

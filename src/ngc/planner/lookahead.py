@@ -324,7 +324,7 @@ class Planner:
                 room = min(room, corner_reach(theta, prev.tolerance,
                                               min(radius_of(pl), radius_of(sl))))
                 tolerance = arc_tolerance(prev, seg, theta)
-            goal = min(goal, arc_blend_cap(prev, seg, theta, amax))
+            goal = min(goal, arc_blend_cap(prev, seg, theta, amax, room))
         b = blend_arc(theta, goal, room, tolerance, 0.5 * amax, SQRT3_2 * amax)
         if b is None or b.trim <= 0.0:
             return None
