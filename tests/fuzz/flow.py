@@ -50,7 +50,7 @@ class _Flow:
         rng = self.rng
         r = rng.random()
         if not counters or r < 0.1:
-            return rng.choice(["[1]", "[0]", "[1 GT 0]", "[#<t> GT 2]", "[#<t> LE 1]"])
+            return rng.choice(["[1]", "[0]", "[1 GT 0]", "[#<_t> GT 2]", "[#<_t> LE 1]"])
         c = rng.choice(counters)
         if r < 0.5:
             return f"[{c} {rng.choice(['EQ', 'NE', 'GT', 'GE', 'LT', 'LE'])} {rng.randint(0, 4)}]"
@@ -59,7 +59,7 @@ class _Flow:
         if r < 0.85 and len(counters) > 1:
             d = rng.choice(counters)
             return f"[{c} {rng.choice(['EQ', 'GT', 'LT'])} {d}]"
-        return f"[[{c} + #<t>] GT {rng.randint(1, 6)}]"
+        return f"[[{c} + #<_t>] GT {rng.randint(1, 6)}]"
 
     # ---- statements ---------------------------------------------------------------------------
     def block(self, depth: int, loops: list[tuple[str, str, str]], counters: list[str],
@@ -90,20 +90,20 @@ class _Flow:
         elif r < 0.9:
             self.move(depth, counters)
         else:
-            self.emit(depth, f"#<t> = [#<t> + {rng.randint(1, 3)}]")
+            self.emit(depth, f"#<_t> = [#<_t> + {rng.randint(1, 3)}]")
 
     def show(self, depth: int, counters: list[str]) -> None:
         rng = self.rng
         kind = rng.choice(["debug", "print", "DEBUG", "PRINT", "print", "debug"])
         sep = rng.choice([", ", ",", ", ", ",  "])
-        shown = " ".join(f"{c[2:-1]}={c}" for c in counters[-2:]) or "t=#<t>"
+        shown = " ".join(f"{c[2:-1]}={c}" for c in counters[-2:]) or "t=#<_t>"
         self.emit(depth, f"({kind}{sep}at {len(self.lines)} {shown})")
 
     def move(self, depth: int, counters: list[str]) -> None:
         rng = self.rng
-        c = rng.choice(counters) if counters else "#<t>"
+        c = rng.choice(counters) if counters else "#<_t>"
         words = [rng.choice(["G1", "G0", "G1"]), f"X[{c} * {rng.randint(1, 5)}]",
-                 f"Y[#<t> + {len(self.lines) % 17}]"]
+                 f"Y[#<_t> + {len(self.lines) % 17}]"]
         if rng.random() < 0.3:
             words.append(f"Z{rng.choice(['-1', '0.5', '2'])}")
         self.emit(depth, " ".join(words))
@@ -137,7 +137,7 @@ class _Flow:
     def ret(self, depth: int, sub: str, counters: list[str]) -> None:
         rng = self.rng
         guard = self.label()
-        value = f" [{rng.choice(counters) if counters else '#<t>'} * 10]" \
+        value = f" [{rng.choice(counters) if counters else '#<_t>'} * 10]" \
             if rng.random() < 0.5 else ""
         self.emit(depth, f"{guard} if {self.condition(counters)}")
         self.emit(depth + 1, f"{sub} return{value}")
@@ -182,7 +182,7 @@ class _Flow:
         rng = self.rng
         label, c = self.label(), self.counter()
         self.emit(depth, f"{c} = 0")
-        count = rng.choice(["0", "1", "2", "3", "4", "2.5", "[#<t> MOD 3]"])
+        count = rng.choice(["0", "1", "2", "3", "4", "2.5", "[#<_t> MOD 3]"])
         self.emit(depth, f"{label} {self.kw('repeat')} [{count}]")
         self.emit(depth + 1, f"{c} = [{c} + 1]")
         self.body(depth + 1, [*loops, (label, "repeat", c)], [*counters, c], in_sub)
@@ -221,18 +221,18 @@ class _Flow:
 def gen_flow(seed: int) -> str:
     f = _Flow(seed)
     rng = f.rng
-    f.lines += ["(flow)", "G21 G90 G17", "F500", "#<t> = " + str(rng.randint(0, 3))]
+    f.lines += ["(flow)", "G21 G90 G17", "F500", "#<_t> = " + str(rng.randint(0, 3))]
     subs = [f.subroutine() for _ in range(rng.choice([0, 0, 1, 1, 2]))]
     for _ in range(rng.randint(1, 3)):
         if subs and rng.random() < 0.4:
             sub = rng.choice(subs)
             f.emit(0, f"{sub} call [{rng.randint(0, 4)}]")
-            f.emit(0, "(debug, value #<_value> #<_value_returned> t=#<t>)")
+            f.emit(0, "(debug, value #<_value> #<_value_returned> t=#<_t>)")
         else:
             f.statement(0, [], [], None)
     for sub in subs:
         if rng.random() < 0.6:
             f.emit(0, f"{sub} call [{rng.randint(0, 4)}]")
-    f.emit(0, "(debug, end t=#<t>)")
+    f.emit(0, "(debug, end t=#<_t>)")
     f.lines.append(rng.choice(["M2", "M30", "M2"]))
     return "".join(line + "\n" for line in f.lines)
