@@ -409,7 +409,7 @@ def _write_profile(j: _Job, p: _Profile, label: int, frame: str, approach: tuple
                 rad = math.hypot(px - ccx, pz - ccz)
                 out.append(f"{code} X{j.x(x1)} Z{j.n(z1_)} R{j.n(rad)}")
         px, pz = x1, z1_
-    if rng.random() < 0.5:
+    if rng.random() < 0.85:  # out to the start's diameter (or face) again, as most programs end
         ax, az = approach
         out.append(f"G{rng.choice((0, 1))} X{j.x(ax if frame != 'face' else px)} "
                    f"Z{j.n(pz if frame != 'face' else az)}")
@@ -426,9 +426,12 @@ def _cycle_start(j: _Job, frame: str) -> tuple[float, float]:
     return j.stock_r + rng.choice((1.0, 2.0, 3.0)), rng.choice((1.0, 2.0, 3.0))
 
 
-def _comp_on(j: _Job) -> None:
+def _comp_on(j: _Job, frame: str = "turn") -> None:
+    """Compensation on the side the tool cuts from (G42 outside going toward the chuck, G41 in a
+    bore), now and then the other."""
     rng = j.rng
-    side = rng.choice(("41", "42", "42", "42"))
+    usual, other = ("41", "42") if frame == "bore" else ("42", "41")
+    side = usual if rng.random() < 0.9 else other
     q, _d = j.table.get(j.tool, (0, 0.0))
     if rng.random() < 0.5 and j.tool:
         j.emit(f"G{side}" + (f" D{j.tool}" if rng.random() < 0.5 else ""))
@@ -476,7 +479,7 @@ def op_profile(j: _Job) -> None:
         if rng.random() < 0.15 and not comp:
             j.emit(f"G0 X{j.x(sx)} Z{j.n(sz)}")
         if comp:
-            _comp_on(j)
+            _comp_on(j, frame)
         words = [f"Q{label}", f"X{j.x(sx)}", f"Z{j.n(sz)}"]
         passes = rng.choice((1, 1, 2, 3))
         if passes > 1 or rng.random() < 0.3:
