@@ -260,7 +260,11 @@ def _radius_center(
         raise NgcSemanticError("Current point same as end point of arc")
     tol = RADIUS_TOLERANCE_MM if it.state.metric else RADIUS_TOLERANCE_INCH
     abs_r = abs(radius)
-    half = math.hypot(e1 - s1, e2 - s2) / 2.0
+    m1 = (s1 + e1) / 2.0
+    m2 = (s2 + e2) / 2.0
+    # the half chord from the midpoint, as rs274 measures it (a midpoint past the largest
+    # number makes it infinite: "too small")
+    half = math.hypot(e1 - m1, e2 - m2)
     if abs_r < half - tol:
         raise NgcSemanticError("Arc radius too small to reach end point")
     abs_r = max(abs_r, half)
@@ -272,8 +276,6 @@ def _radius_center(
     # The center's distance from the chord as rs274 computes it (through the half angle, which
     # leaves a residue of the order of 1e-17 for a half circle: the printed -0.0000).
     offset = abs_r * math.cos(math.asin(min(half / abs_r, 1.0)))
-    m1 = (s1 + e1) / 2.0
-    m2 = (s2 + e2) / 2.0
     angle = theta + side * math.pi / 2.0
     return m1 + offset * math.cos(angle), m2 + offset * math.sin(angle)
 
