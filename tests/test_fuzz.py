@@ -89,6 +89,7 @@ def test_rs274_runs_most_programs_to_the_end(kind: str) -> None:
 BATCH_SEEDS: dict[str, list[int]] = {
     "motion": list(range(1, 21)),
     "offsets": list(range(1, 21)),
+    "offsets-inch": [16, 256, 10182, 10283, 10802, 11143, 23872, *range(1, 14)],
     "oword": list(range(1, 21)),
     "failing": [s for s in range(1, 22) if s != 8],
     "splines": list(range(1, 21)),
