@@ -21,15 +21,19 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
 * P is truncated to a whole number of passes (P0 or less: none, only the traverse to S); pass
   ``k`` from P down to 1 is the profile moved (k-1)*(D-E)/P+E (P itself, not truncated, in the
   division) to that side; a negative distance moves it the other way.  Lines move along their
-  normal; an arc keeps its centre, each end moving along its own radius.
+  normal; an arc keeps its centre and is scaled about it by its start's new radius over its old
+  one (a centre-format arc's end a little off its start's circle keeps that proportion).
 * Corners: an inside corner is cut back to where the moved carriers cross (a line and a circle:
-  at the crossing nearer to where the first ends; two circles: at the crossing right of the line
-  from the first centre to the second in rs274's frame, which turns Z round for a profile going
-  +Z and X round for one whose last point lies below its first; an arc's circle has the radius
-  of its end away from the corner; carriers that just miss meet where they come closest).  An
-  outside corner gets an arc of the distance about the programmed corner when the moved ends
-  lie 0.01 or more apart along the profile's axis, else it is cut like an inside one.  Two
-  moved lines in line at a corner: "G7X error: Cannot intersect parallel lines".
+  at the crossing nearer to where the first ends, an arc before the line first where the line
+  crosses the arc itself; two circles: at the crossing right of the line from the first centre
+  to the second in rs274's frame, which turns Z round for a profile going +Z and X round for
+  one whose last point lies below its first, G72's frame a quarter turn of it; the circles'
+  radii: see ``_crossing``; carriers that just miss meet where they come closest).  An outside
+  corner gets an arc about the programmed corner when the moved ends lie 0.01 or more apart
+  along the profile's axis, else it is cut like an inside one; an arc before it ends where its
+  circle meets the circle about the corner through its scaled end (the crossing farther along
+  it), and G70 holds the corner arc to a programmed arc's radius tolerance.  Two moved lines in
+  line at a corner: "G7X error: Cannot intersect parallel lines".
 * Each pass: a traverse to ``I``, a traverse to the moved profile's first point, then G1/G2/G3
   feeds along it.  The tool is left at the last pass's end (the profile's end moved E); there is
   no move back.
