@@ -8,7 +8,8 @@ ran.  Each loop counts its runs in a parameter of its own, incremented first thi
 so a program ends whichever way its ``continue`` lines go; the counts are small (1 to 4) to keep
 nested programs short.  Now and then a program holds a mistake rs274 reports: a ``break`` or
 ``continue`` aimed at a ``repeat`` or an ``if``, an ``elseif`` whose condition cannot be
-evaluated, an ``endwhile`` for a ``do``.
+evaluated, an ``endwhile`` for a ``do``.  Subroutines are called from the main program's loops
+and branches too, their ``#<_value>`` shown after each call.
 """
 
 from __future__ import annotations
@@ -29,6 +30,7 @@ class _Flow:
         self.named = self.rng.random()  # share of named labels
         self.upper = self.rng.random() < 0.5
         self.mistakes = self.rng.random() < 0.08
+        self.subs: list[str] = []  # subroutines defined so far, called from the main program
 
     def emit(self, depth: int, text: str) -> None:
         self.lines.append(("  " * depth if self.indent else "") + text)
@@ -85,6 +87,10 @@ class _Flow:
             self.jump(depth, loops, counters, in_sub)
         elif in_sub is not None and r < 0.7:
             self.ret(depth, in_sub, counters)
+        elif in_sub is None and self.subs and r < 0.72:
+            c = rng.choice(counters) if counters else str(rng.randint(0, 4))
+            self.emit(depth, f"{rng.choice(self.subs)} call [{c}]")
+            self.emit(depth, "(debug, value #<_value> #<_value_returned>)")
         elif r < 0.8:
             self.show(depth, counters)
         elif r < 0.9:
@@ -222,7 +228,9 @@ def gen_flow(seed: int) -> str:
     f = _Flow(seed)
     rng = f.rng
     f.lines += ["(flow)", "G21 G90 G17", "F500", "#<_t> = " + str(rng.randint(0, 3))]
-    subs = [f.subroutine() for _ in range(rng.choice([0, 0, 1, 1, 2]))]
+    subs = f.subs
+    for _ in range(rng.choice([0, 0, 1, 1, 2])):
+        subs.append(f.subroutine())
     for _ in range(rng.randint(1, 3)):
         if subs and rng.random() < 0.4:
             sub = rng.choice(subs)
