@@ -51,9 +51,6 @@ OVER_FEATURES: dict[str, float] = {
 }
 OVER_JOINS: dict[str, float] = {
     "31_line_arc_135.ngc": -0.0135,  # the second join (arc into the line) is not fitted
-    # beside an arc curving away from a 120° corner, under G64 without P, LinuxCNC's blend is
-    # smaller (36.2 mm/s, the rule gives 44.3)
-    "47_line_quarter_away_120.ngc": -0.0256,
 }
 
 

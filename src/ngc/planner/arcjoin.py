@@ -98,6 +98,17 @@ def arc_blend_cap(prev: Segment, seg: Segment, theta: float, a: float, room: flo
     return cap
 
 
+def arc_room(prev: Segment, seg: Segment, room: float) -> float:
+    """What the moves may give to a corner blend before an arc that curves away from the corner:
+    at most a third of the arc's length (measured on a quarter circle of r 5 under G64 without
+    P: blends reaching 2.62 mm from the corner at 90° and 120°, radius 2.62 and 1.51 mm; an arc
+    that ends at such a corner gives up to half its length, as a line does)."""
+    for arc, at_end, same in arcs_at(prev, seg):
+        if not same and not at_end:
+            room = min(room, arc.length / 3.0)
+    return room
+
+
 def arc_tolerance(prev: Segment, seg: Segment, theta: float) -> float:
     """The tolerance that sizes a corner blend next to an arc under G64 P: an arc that curves into
     the corner counts as a turn sharper by a sixth of its sweep (measured on quarter circles into

@@ -16,7 +16,15 @@ import math
 from collections import deque
 from collections.abc import Callable
 
-from .arcjoin import arc_arc_fit, arc_blend_cap, arc_tolerance, coplanar, helical, line_arc_fit
+from .arcjoin import (
+    arc_arc_fit,
+    arc_blend_cap,
+    arc_room,
+    arc_tolerance,
+    coplanar,
+    helical,
+    line_arc_fit,
+)
 from .geometry import (
     Arc,
     BlendArc,
@@ -319,6 +327,7 @@ class Planner:
         pl, sl = prev.shape, seg.shape
         tolerance = prev.tolerance
         if not lines:
+            room = arc_room(prev, seg, room)
             if prev.tolerance > 0.0:
                 # a blend with an arc is drawn as a Corner: keep it within the tolerance
                 room = min(room, corner_reach(theta, prev.tolerance,
