@@ -17,6 +17,9 @@ from typing import TYPE_CHECKING
 from .geometry import Arc, Line, Piece, Vec
 
 SQRT3_2 = math.sqrt(3.0) / 2.0
+# the greatest sweep the rules that count an arc's sweep were measured on (quarter and half
+# circles); a longer arc (a full circle) keeps the rules of the corner alone
+HALF_TURN = math.pi + 1e-9
 
 if TYPE_CHECKING:
     from .lookahead import Segment, Shape
@@ -82,17 +85,19 @@ def arc_blend_cap(prev: Segment, seg: Segment, theta: float, a: float, room: flo
     radius r) the blend is the circle of a turn sharper by φ/6 reaching d = min(room, r·φ/12)
     from the corner, so it runs at √(√3/2·a·d / tan((θ + φ/6)/2)) (measured on quarter circles
     of r 5 at 30° to 120°, half circles of r 2 at 30° and 45°, and 0.45 mm lines between half
-    circles of r 3 and 6); beside one that curves away from it and follows the blend at
-    √(π/(2√3)·a·r)."""
+    circles of r 3 and 6; for an arc of more than half a turn only the second cap), and at
+    √(0.65·a·r·(1 - s)/(1 + s)), s = sin(θ/2); beside one that curves away from it and follows
+    the blend at √(π/(2√3)·a·r)."""
     cap = math.inf
     s = math.sin(0.5 * theta)
     for arc, at_end, same in arcs_at(prev, seg):
         r = arc.radius
         if same:
-            reach = min(room, r * arc.sweep / 12.0)
-            half = min(0.5 * (theta + arc.sweep / 6.0), 0.5 * math.pi - 1e-6)
-            cap = min(cap, math.sqrt(SQRT3_2 * a * reach / math.tan(half)),
-                      math.sqrt(0.65 * a * r * (1.0 - s) / (1.0 + s)))
+            cap = min(cap, math.sqrt(0.65 * a * r * (1.0 - s) / (1.0 + s)))
+            if arc.sweep <= HALF_TURN:
+                reach = min(room, r * arc.sweep / 12.0)
+                half = min(0.5 * (theta + arc.sweep / 6.0), 0.5 * math.pi - 1e-6)
+                cap = min(cap, math.sqrt(SQRT3_2 * a * reach / math.tan(half)))
         elif not at_end:
             cap = min(cap, math.sqrt(math.pi / (2.0 * math.sqrt(3.0)) * a * r))
     return cap
@@ -116,7 +121,7 @@ def arc_tolerance(prev: Segment, seg: Segment, theta: float) -> float:
     so the blend's radius is the tolerance's at that angle."""
     extra = 0.0
     for arc, _, same in arcs_at(prev, seg):
-        if same:
+        if same and arc.sweep <= HALF_TURN:
             extra += arc.sweep / 6.0
     tolerance: float = prev.tolerance
     if extra <= 0.0:
