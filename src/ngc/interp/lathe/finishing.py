@@ -49,6 +49,7 @@ from ...errors import NgcSemanticError
 from .offset import EPS, _shift, intersections, tangent
 from .path import Out
 from .profile import CCW, CW, LINE, NOT_MONOTONIC, PARALLEL, Profile, Seg, steps, within
+from .zeros import turning_zeros
 
 # an outside corner whose moved ends lie closer than this along the profile's axis is cut like
 # an inside one, not rounded
@@ -294,10 +295,16 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
     entry, axis = _entry(profile, start)
     side = pass_side(profile, entry, axis)
     first = profile[0]
+    # a pass that moves the profile gives the zeros of its points the signs of rs274's frame (X
+    # turned round for a profile ending below its first point, Z for one going +Z); one that
+    # does not keeps the profile's own
+    turned = turning_zeros(profile[-1].x1 < first.x1, axis[0] > 0)
     for k in range(passes, 0, -1):
         dist = (k - 1) * (d - e) / p + e
         path, corners = moved_with_corners(profile, side, dist, axis)
+        out.zeros = None  # (the entry is not in the frame)
         out.traverse(*entry)
+        out.zeros = turned if dist else None
         if path:
             out.traverse(path[0].x0, path[0].z0)
         else:

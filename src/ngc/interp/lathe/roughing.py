@@ -32,18 +32,19 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
 * rs274 leaves out some of G7x.1's feeds of no length.  The cases found (a crossing of lines
   along X and Z, the ends of a chamfer or a fillet) suggest it feeds only where its arithmetic
   leaves the two points unequal; no rule is known, and ngc always feeds.
-* Zeros print with the sign rs274's frame gives them (``_turning_zeros``, ``_facing_zeros``).
+* Zeros print with the sign rs274's frame gives them (``zeros.turning_zeros``,
+  ``zeros.facing_zeros``).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 
 from .finishing import moved_with_corners, pass_side
 from .offset import EPS, line_circle
 from .path import Out
 from .profile import CCW, CW, LINE, Seg, within
+from .zeros import facing_zeros, turning_zeros
 
 
 class _Frame:
@@ -90,38 +91,6 @@ def _on_arc(seg: Seg, fr: _Frame, pa: float, pb: float) -> bool:
     sweep = (e - s) % (2 * math.pi) if seg.kind == CCW else (s - e) % (2 * math.pi)
     at = (p - s) % (2 * math.pi) if seg.kind == CCW else (s - p) % (2 * math.pi)
     return at <= sweep + 1e-12 or at >= 2 * math.pi - 1e-12
-
-
-# a coordinate this near 0 is 0 (an R arc's centre or a moved point a few ulps off, where
-# rs274's own arithmetic gives 0 and its frame the sign)
-_ZERO = 1e-12
-
-
-def _turning_zeros(flip_x: bool, flip_z: bool) -> Callable[[float, float], tuple[float, float]]:
-    """G71's signs of zero: rs274 turns an axis round in its frame when the passes step up X or
-    cut toward +Z, and a coordinate of 0 comes back from such an axis as -0, from the others as
-    +0 (a -0 of the program too)."""
-    def zeros(x: float, z: float) -> tuple[float, float]:
-        if -_ZERO < x < _ZERO:
-            x = -0.0 if flip_x else 0.0
-        if -_ZERO < z < _ZERO:
-            z = -0.0 if flip_z else 0.0
-        return x, z
-    return zeros
-
-
-def _facing_zeros(x_round: bool, z_by_x: bool) -> Callable[[float, float], tuple[float, float]]:
-    """G72's signs of zero: rs274's frame is turned a quarter round, and what comes back as 0
-    takes its sign from that turn.  Cutting toward +X an X of 0 prints -0; where the passes step
-    the way the cut goes round (down Z cutting toward -X, up Z toward +X) a Z of 0 prints -0
-    where X is positive, +0 where it is not; every other 0 prints +0 (a -0 of the program too)."""
-    def zeros(x: float, z: float) -> tuple[float, float]:
-        if -_ZERO < x < _ZERO:
-            x = -0.0 if x_round else 0.0
-        if -_ZERO < z < _ZERO:
-            z = -0.0 if z_by_x and x > 0.0 else 0.0
-        return x, z
-    return zeros
 
 
 # how near a level's crossing with the profile is to where the tool is for it to be there (a
@@ -212,9 +181,9 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     t = 1.0 if eb > fb else -1.0  # the way the profile goes (a profile going nowhere: toward -b)
     turn = -s  # how rs274's frame has the step axis (see the levels)
     if not fr.swap:
-        out.zeros = _turning_zeros(s > 0, t > 0)
+        out.zeros = turning_zeros(s > 0, t > 0)
     else:
-        out.zeros = _facing_zeros(t > 0, s * t > 0)
+        out.zeros = facing_zeros(t > 0, s * t > 0)
     # A start ahead of the profile's first point along the cut starts from that point's b.
     if t * (sb - fb) > 0:
         sb = fb
