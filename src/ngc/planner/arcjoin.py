@@ -20,6 +20,7 @@ SQRT3_2 = math.sqrt(3.0) / 2.0
 # the greatest sweep the rules that count an arc's sweep were measured on (quarter and half
 # circles); a longer arc (a full circle) keeps the rules of the corner alone
 HALF_TURN = math.pi + 1e-9
+LONG_ARC_TURN = math.pi / 8.0  # under G64 P: measured on three quarters of a circle and a full one
 
 if TYPE_CHECKING:
     from .lookahead import Segment, Shape
@@ -117,12 +118,13 @@ def arc_room(prev: Segment, seg: Segment, room: float) -> float:
 def arc_tolerance(prev: Segment, seg: Segment, theta: float) -> float:
     """The tolerance that sizes a corner blend next to an arc under G64 P: an arc that curves into
     the corner counts as a turn sharper by a sixth of its sweep (measured on quarter circles into
-    lines at 30° to 120°: the blend of a turn 15° sharper, to 0.01°; half circles: 29° to 34°),
-    so the blend's radius is the tolerance's at that angle."""
+    lines at 30° to 120°: the blend of a turn 15° sharper, to 0.01°; half circles: 29° to 34°;
+    three quarters of a circle and a full one: 22.5°), so the blend's radius is the tolerance's at
+    that angle."""
     extra = 0.0
     for arc, _, same in arcs_at(prev, seg):
-        if same and arc.sweep <= HALF_TURN:
-            extra += arc.sweep / 6.0
+        if same:
+            extra += arc.sweep / 6.0 if arc.sweep <= HALF_TURN else LONG_ARC_TURN
     tolerance: float = prev.tolerance
     if extra <= 0.0:
         return tolerance
