@@ -47,7 +47,7 @@ OVER_CASES: dict[str, float] = {
 OVER_SHARED: dict[str, float] = {}
 OVER_FEATURES: dict[str, float] = {
     # within 1 %, over 0.5 %: G5 curves run as lines, LinuxCNC runs them as arcs
-    "17_nurbs_g5_p.ngc": -0.0076,
+    "17_nurbs_g5_p.ngc": -0.0072,
 }
 OVER_JOINS: dict[str, float] = {
     "31_line_arc_135.ngc": -0.0135,  # the second join (arc into the line) is not fitted

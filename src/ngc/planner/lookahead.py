@@ -386,6 +386,9 @@ class Planner:
                     prev.vmax = vmax  # the blend's, even above the line's own feed
                     prev.accel = min(prev.accel, 0.5 * amax)
                     prev.half = min(prev.half, 0.5 * amax)
+                    before = self.queue[-2] if len(self.queue) > 1 else None
+                    if before is not None and before.kind == BLEND and vmax < before.vend:
+                        before.vend = vmax  # and the blend before it ends at that speed
                 else:
                     prev.ramp = True
         # the blend goes between prev and seg
