@@ -9,9 +9,11 @@ from pathlib import Path
 import pytest
 
 from ngc import cli
+from ngc.canon.jsonl import ListSink
 from ngc.engine import EngineSegment, ModeChange, ProgramStop, run, svg
 from ngc.engine.output import as_dict, as_text
 from ngc.errors import NgcError
+from ngc.interp.interpreter import Interpreter
 
 DRAWINGS = Path(__file__).resolve().parent.parent / "docs" / "engine"
 EXAMPLES = sorted(DRAWINGS.glob("*.ngc"))
@@ -115,3 +117,42 @@ def test_check_and_canon_commands(capsys: pytest.CaptureFixture[str], tmp_path: 
     assert last == {"op": "PROGRAM_END", "line": 5}
     assert svg.main([str(program), "-o", str(tmp_path / "p.svg")]) == 0
     assert 'd="M0,0\nC1,0 2,0 3,0"' in (tmp_path / "p.svg").read_text()
+
+
+# -- the same M codes under both dialects ----------------------------------------------------------
+_LINUXCNC_M = {"StartSpindleClockwise": "clockwise", "StartSpindleCounterclockwise":
+               "counterclockwise", "StopSpindleTurning": "off", "ProgramStop": "PROGRAM_STOP",
+               "OptionalProgramStop": "OPTIONAL_PROGRAM_STOP", "ProgramEnd": "PROGRAM_END"}
+
+
+def _linuxcnc_m(text: str) -> list[tuple[int, str]]:
+    """(line, what) of the spindle's turns and the stops of a LinuxCNC-dialect run."""
+    sink = ListSink()
+    interp = Interpreter(sink)
+    interp.startup()
+    interp.run(text.splitlines())
+    out = []
+    for op, _label, line in sink.ops:
+        name = type(op).__name__
+        if line and name in _LINUXCNC_M:
+            out.append((line, _LINUXCNC_M[name]))
+        elif line and name == "SetSpindleSpeed":
+            out.append((line, f"S{op.rpm:g}"))  # type: ignore[union-attr]
+    return out
+
+
+def _engine_m(text: str) -> list[tuple[int, str]]:
+    out = []
+    for op in run(text):
+        if isinstance(op, ProgramStop):
+            out.append((op.line, op.name))
+        elif isinstance(op, ModeChange) and op.name == "SPINDLE":
+            out.append((op.line, str(op.value)))
+        elif isinstance(op, ModeChange) and op.name == "SPINDLE_SPEED":
+            out.append((op.line, f"S{op.value:g}"))
+    return out
+
+
+def test_spindle_and_stops_as_linuxcnc_runs_them() -> None:
+    program = "G21\nS1000 M3\nG0 X1\nM4 S250\nM0\nM1\nM5\nG0 X2\nM3 S 800\nM2\n"
+    assert _engine_m(program) == _linuxcnc_m(program)
