@@ -125,7 +125,7 @@ def arc_tolerance(prev: Segment, seg: Segment, theta: float) -> float:
     for arc, _, same in arcs_at(prev, seg):
         if same:
             extra += arc.sweep / 6.0 if arc.sweep <= HALF_TURN else LONG_ARC_TURN
-    tolerance: float = prev.tolerance
+    tolerance: float = abs(prev.tolerance)
     if extra <= 0.0:
         return tolerance
     c0 = math.cos(0.5 * theta)

@@ -326,11 +326,13 @@ class Planner:
             room = seg.length
         pl, sl = prev.shape, seg.shape
         tolerance = prev.tolerance
+        if tolerance < 0.0 and lines:
+            tolerance = 0.0  # before any G61/G64: beside an arc only
         if not lines:
             room = arc_room(prev, seg, room)
-            if prev.tolerance > 0.0:
+            if tolerance != 0.0:  # (< 0: the tolerance before any G61/G64, for arcs only)
                 # a blend with an arc is drawn as a Corner: keep it within the tolerance
-                room = min(room, corner_reach(theta, prev.tolerance,
+                room = min(room, corner_reach(theta, abs(tolerance),
                                               min(radius_of(pl), radius_of(sl))))
                 tolerance = arc_tolerance(prev, seg, theta)
             goal = min(goal, arc_blend_cap(prev, seg, theta, amax, room))
