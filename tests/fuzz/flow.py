@@ -33,12 +33,24 @@ class _Flow:
         self.subs: list[str] = []  # subroutines defined so far, called from the main program
 
     def emit(self, depth: int, text: str) -> None:
+        rng = self.rng
+        if text.startswith("o") and rng.random() < 0.04:
+            # the spellings real programs have: O, a line number, a comment after the o-word
+            r = rng.random()
+            if r < 0.4:
+                text = "O" + text[1:]
+            elif r < 0.7:
+                text = f"N{10 * len(self.lines)} {text}"
+            else:
+                text += rng.choice([" (loop)", " ; end", " (print,on o-line)"])
         self.lines.append(("  " * depth if self.indent else "") + text)
 
     def kw(self, word: str) -> str:
         return word.upper() if self.upper and self.rng.random() < 0.3 else word
 
     def label(self) -> str:
+        if self.mistakes and self.labels > 2 and self.rng.random() < 0.05:
+            return f"o{100 + self.rng.randint(1, self.labels)}"  # a label used before
         self.labels += 1
         if self.rng.random() < self.named:
             return f"o<{self.rng.choice(['l', 'loop', 'b', 'x', 'blk'])}{self.labels}>"
