@@ -50,11 +50,6 @@ OVER_FEATURES: dict[str, float] = {
     "17_nurbs_g5_p.ngc": -0.0072,
 }
 OVER_JOINS: dict[str, float] = {
-    "31_line_arc_135.ngc": -0.0135,  # the second join (arc into the line) is not fitted
-    # an arc into a line at a corner the arc curves away from, sharper than 90°: LinuxCNC's blend
-    # is smaller (41.2 mm/s at 120°, 24.4 at 150°; the rule gives 44.3 and 30.2)
-    "59_quarter_line_away_120.ngc": -0.0123,
-    "60_quarter_line_away_150.ngc": -0.0292,
     # before any G61/G64 the first corners of a run beside an arc come out either way on LinuxCNC:
     # runs of 0.863, 0.863, 0.911 s and 0.808, 0.808, 0.866 s; ngc takes the 0.001 inch tolerance
     # later corners have (0.911 and 0.868 s)

@@ -115,6 +115,21 @@ def arc_room(prev: Segment, seg: Segment, room: float) -> float:
     return room
 
 
+def arc_away_tolerance(prev: Segment, seg: Segment, tolerance: float) -> float:
+    """The tolerance of a corner blend beside an arc that curves away from the corner (before or
+    after it): the blend is sized as one between the tangents at the corner that passes at most a
+    quarter of the arc's programmed length from the corner, and the circle of that radius is then
+    fitted to the moves (measured under G64 without P: a quarter circle of r 5 into a line at 120°
+    and 150°, blends of radius 1.963 and 0.686 mm, each 1.963 mm from the corner of the tangents;
+    a line into such an arc at 150° the same; half a circle of r 2 and an eighth of one of r 8
+    into a line at 135°: radius 0.974 mm); ``tolerance`` 0 is none."""
+    for arc, _, same in arcs_at(prev, seg):
+        if not same:
+            cap = 0.25 * arc.length
+            tolerance = cap if tolerance <= 0.0 else min(tolerance, cap)
+    return tolerance
+
+
 def arc_tolerance(prev: Segment, seg: Segment, theta: float) -> float:
     """The tolerance that sizes a corner blend next to an arc under G64 P: an arc that curves into
     the corner counts as a turn sharper by a sixth of its sweep (measured on quarter circles into

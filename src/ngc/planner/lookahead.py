@@ -18,6 +18,7 @@ from collections.abc import Callable
 
 from .arcjoin import (
     arc_arc_fit,
+    arc_away_tolerance,
     arc_blend_cap,
     arc_room,
     arc_tolerance,
@@ -335,6 +336,7 @@ class Planner:
                 room = min(room, corner_reach(theta, abs(tolerance),
                                               min(radius_of(pl), radius_of(sl))))
                 tolerance = arc_tolerance(prev, seg, theta)
+            tolerance = arc_away_tolerance(prev, seg, tolerance)
             goal = min(goal, arc_blend_cap(prev, seg, theta, amax, room))
         b = blend_arc(theta, goal, room, tolerance, 0.5 * amax, SQRT3_2 * amax)
         if b is None or b.trim <= 0.0:
