@@ -92,6 +92,7 @@ class Segment:
         "vout",
         "vreach",
         "vsoft",
+        "wide",
     )
 
     # set when the segment is run: its time, start time, speeds, and how long its start runs
@@ -138,6 +139,8 @@ class Segment:
         self.cut0 = 0.0  # how much of a line's start and end blends have taken (path())
         self.cut1 = 0.0
         self.ramp_in = False  # a line that starts with a corner blend
+        # a wide arc's (accel, half) once another move follows it (see Moves.run_arc)
+        self.wide: tuple[float, float] | None = None
         self.ramp = False  # a line between two corner blends: it may run as a ramp (ramp_time)
 
     def path(self) -> Shape:
@@ -226,6 +229,10 @@ class Planner:
         q = self.queue
         if q:
             prev = q[-1]
+            if prev.wide is not None:
+                # a wide arc takes the acceleration its normal share leaves once a move follows
+                prev.accel, prev.half = prev.wide
+                prev.wide = None
             self._join(prev, seg)
         q.append(seg)
         self._backward()
