@@ -25,10 +25,13 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
   deeper (a pocket), each level of the start's grid it goes down through (G7x.2: each level from
   the pocket's top) is cut: a feed down along the profile to the level (from the top itself only
   where a line of the profile goes down from it), across to the profile's far side, a retract of
-  R on both axes, a traverse back and a feed to the entry.  G7x.1 instead enters each move and
-  each arc rounding a corner with a feed (of no length) to its start and bridges a pocket by a
-  feed across its top (entered so only from a corner's arc).  A last feed closes back to the
-  start's level at E unless E lies beyond it (G71: or on it).
+  R on both axes, a traverse back and a feed to the entry.  The profile's way down from P0 (its
+  first pieces going deeper, up to the first going no deeper or after one climbing at its end;
+  none where the way to P0 is fed) is cut so by G7x.1 too and left uncut by G7x.2; past it, G7x.1
+  enters each move and each arc rounding a corner with a feed (of no length) to its start and
+  bridges a pocket by a feed across its top (entered so only from a corner's arc), and G7x.2
+  cuts each pocket from its own top.  A last feed closes back to the start's level at E unless
+  E lies beyond it (G71: or on it).
 * rs274 leaves out some of G7x.1's feeds of no length.  The cases found (a crossing of lines
   along X and Z, the ends of a chamfer or a fillet) suggest it feeds only where its arithmetic
   leaves the two points unequal; no rule is known, and ngc always feeds.
@@ -258,7 +261,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
             out.traverse(*fr.xz(level, entry))
             k += 1
     walk, tags = _split(moved, corners, fr, s)
-    if s * (p0a - sa) < EPS:
+    if s * (p0a - sa) < EPS:  # (fed, below)
         # the moved profile starts at or short of the start's level: the way to it is cut too
         if variant == 1:
             walk.insert(0, approach_line)
@@ -267,23 +270,24 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
             out.feed(first.x0, first.z0)
     else:
         out.traverse(first.x0, first.z0)
-    if variant == 1:
-        ends = len(walk)
-        if closes:
-            walk.append(closing)
-            tags.append(MOVE)
-        _bridged(out, fr, walk, tags, ends, s, t)
-        return
+    # G7x.1 cuts the profile's way down from its first point as G7x does (G7x.2 leaves it
+    # uncut), up to the first piece going no deeper; only later pockets are bridged (a cut way
+    # to the first point is the first piece, going no deeper)
+    fed = s * (p0a - sa) < EPS
+    descent = _descent(walk, fr, s) if variant == 1 or not fed else 0
     top: float | None = None  # where the pocket being walked down began
     from_top: list[float] = []  # G7x.2's levels from there, stepped I at a time as rs274 does
-    # G7x.2 leaves uncut a pocket the profile goes down into from its first point
     uncut = False
     for i, (seg, tag) in enumerate(zip(walk, tags, strict=True)):
+        if variant == 1 and i == descent:
+            break
         a0 = fr.ab(seg.x0, seg.z0)[0]
         a1 = fr.ab(seg.x1, seg.z1)[0]
         down, deep = _depth(seg, fr, s)
-        if s * (deep - a0) > EPS and i == 0 and variant == 2:
+        if variant == 2 and i < descent:
             uncut = True
+        elif s * (deep - a0) <= EPS:
+            uncut = False
         if s * (deep - a0) > EPS and not uncut:
             # a pocket: passes at the levels the segment goes down through (G7x.2: from the
             # pocket's top down, the others: on the start's grid)
@@ -325,8 +329,33 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
             top = None
             uncut = False
         _emit(out, seg)
+    if variant == 1:
+        rest, rest_tags = walk[descent:], tags[descent:]
+        ends = len(rest)
+        if closes:
+            rest.append(closing)
+            rest_tags.append(MOVE)
+        _bridged(out, fr, rest, rest_tags, ends, s, t)
+        return
     if closes:
         _emit(out, closing)
+
+
+def _descent(walk: list[Seg], fr: _Frame, s: float) -> int:
+    """How many pieces from the walk's start go deeper (along ``s`` on ``a``): the profile's way
+    down from its first point, ending at the first piece going no deeper or after one climbing
+    at its end."""
+    n = 0
+    for seg in walk:
+        a0 = fr.ab(seg.x0, seg.z0)[0]
+        a1 = fr.ab(seg.x1, seg.z1)[0]
+        deep = _depth(seg, fr, s)[1]
+        if s * (deep - a0) <= EPS:
+            break
+        n += 1
+        if s * (a1 - deep) < -EPS:
+            break
+    return n
 
 
 def _bridged(out: Out, fr: _Frame, chain: list[Seg], tags: list[int], pockets_end: int,
