@@ -14,7 +14,7 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
   E is below P0, else smaller; G72 the same on Z, a tie counting the other way).  If the profile
   lies nowhere beyond the start that way there is nothing to rough: the tool feeds from the
   start along the profile moved D to the side G70 would move it from the start (G7x.1: each
-  move entered by a feed to its start).
+  move entered by a feed to its start and its pockets bridged, as in its contour pass below).
 * Each level ``start + k*I`` before P0 (stepped ``I`` at a time): a traverse to where the level
   meets the approach, then (if the level meets the profile, or the closing line from E back to
   the start's level, past that point) a feed along ``b`` to the first such point, a traverse back
@@ -197,14 +197,18 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
     if far <= s * sa:
         # nothing beyond the start: the profile moved D to the side G70 would take from the
-        # start, fed from the start (G7x.1: each move entered by a feed to its start)
+        # start, fed from the start (G7x.1: each move entered by a feed to its start, pockets
+        # bridged)
         out.traverse(*start)
-        moved = moved_with_corners(profile, pass_side(profile, start, way), d, way,
-                                   roughing=True)[0]
+        moved, corners = moved_with_corners(profile, pass_side(profile, start, way), d, way,
+                                            roughing=True)
         approach_line = Seg(LINE, start[0], start[1], moved[0].x0, moved[0].z0)
+        if variant == 1:
+            # (bridging its pockets as below)
+            tags = [MOVE] + [CORNER if i in corners else MOVE for i in range(len(moved))]
+            _bridged(out, fr, [approach_line, *moved], tags, len(moved) + 1, s, t)
+            return
         for seg in [approach_line, *moved]:
-            if variant == 1:
-                out.feed(seg.x0, seg.z0)
             _emit(out, seg)
         return
     moved, corners = moved_with_corners(profile, side, d, way, roughing=True)
@@ -372,7 +376,8 @@ def _bridged(out: Out, fr: _Frame, chain: list[Seg], tags: list[int], pockets_en
         if i < pockets_end and s * (deep - a0) > EPS:
             exit_at = None
             for j in range(i, len(chain)):
-                hits = [hb for hb in _level_hits(chain[j], fr, a0) if t * (hb - b0) > EPS]
+                # (past the tangent a level through an arc's top makes at the arc's start)
+                hits = [hb for hb in _level_hits(chain[j], fr, a0) if t * (hb - b0) > _TOUCH]
                 if hits:
                     exit_at = (j, min(hits, key=lambda hb: t * hb))
                     break
