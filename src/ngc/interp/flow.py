@@ -612,9 +612,11 @@ class Flow:
 
     # -- conditionals -------------------------------------------------------------------------
     def _if(self, f: Frame, block: Block, ow: OWord) -> None:
+        # rs274 evaluates a line's condition (or count) before it checks the label.
         label = self.label(ow)
+        holds = self.condition(ow)
         self.bind(f, block, label, "if")
-        if not self.condition(ow):
+        if not holds:
             self.next_branch(f, block.line, ow, label)
 
     def past(self, f: Frame, start: int, ow: OWord, label: str, kinds: tuple[str, ...]
@@ -673,17 +675,18 @@ class Flow:
     # -- loops ---------------------------------------------------------------------------------
     def _while(self, f: Frame, block: Block, ow: OWord) -> None:
         label = ow.label if ow.label is not None else self.label(ow)
+        holds = self.condition(ow)
         bound = f.labels.get(label)
         if bound is not None and bound[0] == "do" and bound[1] != block.line:
             # The end of a do-while loop.
-            if self.condition(ow) and not self.broken_while:
+            if holds and not self.broken_while:
                 self.again()
                 f.pc = bound[1] + 1
             self.broken_while = False
             return
         if bound is None or bound[1] != block.line:
             self.bind(f, block, label, "while")
-        if not self.condition(ow):
+        if not holds:
             self.end_loop(f, block.line, ow, label, "endwhile", block.line)
 
     def end_loop(self, f: Frame, start: int, ow: OWord, label: str, end: str, top: int) -> None:
@@ -712,11 +715,11 @@ class Flow:
 
     def _repeat(self, f: Frame, block: Block, ow: OWord) -> None:
         label = self.label(ow)
+        count = evaluate(ow.args[0], self.interp.machine.params)  # each run, a left count too
         self.bind(f, block, label, "repeat")
         key = (f.body, block.line)
         left = self.active.get(key)
         if left is None:
-            count = evaluate(ow.args[0], self.interp.machine.params)
             # Halves to even, through a C int: a count past its range (or NaN) runs no time.
             left = c_int(round(count)) if count - count == 0.0 else INT_MIN
         if left > 0:
