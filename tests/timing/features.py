@@ -20,7 +20,6 @@ measures them.
 
 from __future__ import annotations
 
-import argparse
 import math
 import random
 import sys
@@ -302,23 +301,9 @@ def generate() -> dict[str, str]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--out", type=Path, default=FEATURES_DIR)
-    ap.add_argument("--check", action="store_true", help="compare with the files, write nothing")
-    args = ap.parse_args(argv)
-    progs = generate()
-    if args.check:
-        bad = [k for k, t in progs.items()
-               if not (args.out / k).exists() or (args.out / k).read_text() != t]
-        for k in bad:
-            print(f"differs: {k}")
-        return 1 if bad else 0
-    args.out.mkdir(parents=True, exist_ok=True)
-    for name, text in progs.items():
-        (args.out / name).write_text(text)
-        print(f"{name}: {text.count(chr(10))} lines")
-    return 0
+    from generate import write_programs  # the sibling generator's command line
 
+    return write_programs(__doc__.split("\n")[0], FEATURES_DIR, generate, argv)
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -1183,12 +1183,15 @@ def generate() -> dict[str, str]:
     return {c.file: "\n".join(c.make(Rng(c.seed))) + "\n" for c in CASES}
 
 
-def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--out", type=Path, default=CASES_DIR)
+def write_programs(description: str, default_out: Path, make: Callable[[], dict[str, str]],
+                   argv: list[str] | None = None) -> int:
+    """The command line of a generator of timing programs: write them (``--out``), or only
+    compare them with the files there (``--check``, exit 1 if any differs)."""
+    ap = argparse.ArgumentParser(description=description)
+    ap.add_argument("--out", type=Path, default=default_out)
     ap.add_argument("--check", action="store_true", help="compare with the files, write nothing")
     args = ap.parse_args(argv)
-    progs = generate()
+    progs = make()
     if args.check:
         bad = [n for n, t in progs.items() if not (args.out / n).exists() or (args.out / n).read_text() != t]
         for n in bad:
@@ -1199,6 +1202,10 @@ def main(argv: list[str] | None = None) -> int:
         (args.out / name).write_text(text)
         print(f"{name}: {text.count(chr(10))} lines")
     return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    return write_programs(__doc__.split("\n")[0], CASES_DIR, generate, argv)
 
 
 if __name__ == "__main__":
