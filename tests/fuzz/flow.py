@@ -15,6 +15,7 @@ and branches too, their ``#<_value>`` shown after each call.
 from __future__ import annotations
 
 import random
+from collections.abc import Callable
 
 MAX_DEPTH = 4
 
@@ -165,48 +166,45 @@ class _Flow:
              in_sub: str | None) -> None:
         self.block(depth, loops, counters, in_sub, self.rng.randint(1, 3))
 
-    def while_loop(self, depth: int, loops: list[tuple[str, str, str]], counters: list[str],
-                   in_sub: str | None) -> None:
-        rng = self.rng
+    def loop(self, depth: int, loops: list[tuple[str, str, str]], counters: list[str],
+             in_sub: str | None, kind: str, head: Callable[[str], str],
+             end: Callable[[str], str]) -> None:
+        """A loop of ``kind`` counting its runs in a parameter of its own: ``head`` and ``end``
+        give the text after the label of its first and last lines, from the counter's name."""
         label, c = self.label(), self.counter()
         self.emit(depth, f"{c} = 0")
-        self.emit(depth, f"{label} {self.kw('while')} [{c} LT {rng.randint(0, 4)}]")
+        self.emit(depth, f"{label} {head(c)}")
         self.emit(depth + 1, f"{c} = [{c} + 1]")
-        self.body(depth + 1, [*loops, (label, "while", c)], [*counters, c], in_sub)
-        end = "endwhile"
-        if self.mistakes and rng.random() < 0.1:
-            end = rng.choice(["endrepeat", "endif", "while [0]"])
-        self.emit(depth, f"{label} {self.kw(end)}")
-        if rng.random() < 0.5:
+        self.body(depth + 1, [*loops, (label, kind, c)], [*counters, c], in_sub)
+        self.emit(depth, f"{label} {end(c)}")
+        if self.rng.random() < 0.5:
             self.emit(depth, f"(debug, after {label[1:]} {c[2:-1]}={c})")
+
+    def mistaken(self, right: str, wrong: list[str]) -> str:
+        """``right``, or in a program with mistakes now and then one of ``wrong``."""
+        if self.mistakes and self.rng.random() < 0.1:
+            return self.rng.choice(wrong)
+        return right
+
+    def while_loop(self, depth: int, loops: list[tuple[str, str, str]], counters: list[str],
+                   in_sub: str | None) -> None:
+        self.loop(depth, loops, counters, in_sub, "while",
+                  lambda c: f"{self.kw('while')} [{c} LT {self.rng.randint(0, 4)}]",
+                  lambda c: self.kw(self.mistaken("endwhile", ["endrepeat", "endif", "while [0]"])))
 
     def do_loop(self, depth: int, loops: list[tuple[str, str, str]], counters: list[str],
                 in_sub: str | None) -> None:
-        rng = self.rng
-        label, c = self.label(), self.counter()
-        self.emit(depth, f"{c} = 0")
-        self.emit(depth, f"{label} {self.kw('do')}")
-        self.emit(depth + 1, f"{c} = [{c} + 1]")
-        self.body(depth + 1, [*loops, (label, "do", c)], [*counters, c], in_sub)
-        end = f"while [{c} LT {rng.randint(0, 4)}]"
-        if self.mistakes and rng.random() < 0.1:
-            end = rng.choice(["endwhile", "endrepeat"])
-        self.emit(depth, f"{label} {self.kw(end)}")
-        if rng.random() < 0.5:
-            self.emit(depth, f"(debug, after {label[1:]} {c[2:-1]}={c})")
+        self.loop(depth, loops, counters, in_sub, "do", lambda c: self.kw("do"),
+                  lambda c: self.kw(self.mistaken(f"while [{c} LT {self.rng.randint(0, 4)}]",
+                                                  ["endwhile", "endrepeat"])))
 
     def repeat_loop(self, depth: int, loops: list[tuple[str, str, str]], counters: list[str],
                     in_sub: str | None) -> None:
-        rng = self.rng
-        label, c = self.label(), self.counter()
-        self.emit(depth, f"{c} = 0")
-        count = rng.choice(["0", "1", "2", "3", "4", "2.5", "[#<_t> MOD 3]"])
-        self.emit(depth, f"{label} {self.kw('repeat')} [{count}]")
-        self.emit(depth + 1, f"{c} = [{c} + 1]")
-        self.body(depth + 1, [*loops, (label, "repeat", c)], [*counters, c], in_sub)
-        self.emit(depth, f"{label} {self.kw('endrepeat')}")
-        if rng.random() < 0.5:
-            self.emit(depth, f"(debug, after {label[1:]} {c[2:-1]}={c})")
+        def head(c: str) -> str:
+            count = self.rng.choice(["0", "1", "2", "3", "4", "2.5", "[#<_t> MOD 3]"])
+            return f"{self.kw('repeat')} [{count}]"
+
+        self.loop(depth, loops, counters, in_sub, "repeat", head, lambda c: self.kw("endrepeat"))
 
     def if_chain(self, depth: int, loops: list[tuple[str, str, str]], counters: list[str],
                  in_sub: str | None) -> None:
