@@ -106,17 +106,17 @@ SEEK = 2  # a search for a subroutine to call
 
 
 class Mark:
-    """Where a skip stopped: the line, its o-word and its source text; and the labels of the
-    ``break`` lines of its label the skip passed over (see ``Flow.broken_while``)."""
+    """Where a skip stopped: the line, its o-word and its source text; and whether the skip
+    passed a ``break`` line of its label (see ``Flow.broken_while``)."""
 
-    __slots__ = ("breaks", "computed", "line", "oword", "source", "stray")
+    __slots__ = ("broke", "computed", "line", "oword", "source", "stray")
 
-    def __init__(self, line: int, oword: OWord, source: str, breaks: tuple[str, ...] = (),
+    def __init__(self, line: int, oword: OWord, source: str, broke: bool = False,
                  computed: bool = False, stray: bool = False) -> None:
         self.line = line
         self.oword = oword
         self.source = source
-        self.breaks = breaks
+        self.broke = broke
         self.computed = computed
         # The skip ended at a line of its label with another keyword, which runs next.
         self.stray = stray
@@ -487,7 +487,7 @@ class Flow:
               seeking: Block | None = None) -> Mark:
         it = self.interp
         body = f.body
-        breaks: list[str] = []
+        broke = False  # a break line of the label passed
         computed = False  # a computed label was passed over: the skip may end otherwise next time
         params = it.machine.params
         context = params if mode == BRANCH else _Skimming(params)
@@ -556,11 +556,11 @@ class Flow:
                 if passed != label:
                     continue
                 if ow.keyword in kinds:
-                    return Mark(number, ow, source, tuple(breaks), computed)
+                    return Mark(number, ow, source, broke, computed)
                 if mode != BRANCH:
                     continue
                 if ow.keyword in _STRAYS:
-                    return Mark(number, ow, source, tuple(breaks), computed, stray=True)
+                    return Mark(number, ow, source, broke, computed, stray=True)
                 if ow.keyword in ("break", "continue"):
                     bound = f.labels.get(label)
                     if bound is not None and bound[0] not in _LOOPS:
@@ -568,7 +568,7 @@ class Flow:
                             f"{number}: no matching while/do label: '{source}' "
                             f"(found '{bound[0]}' in line {bound[1]})")
                     if ow.keyword == "break":
-                        breaks.append(passed)
+                        broke = True
             except NgcError as err:
                 raise err.locate(file=body.file, line=number, source=source) from None
 
@@ -606,7 +606,7 @@ class Flow:
             found = self.skip(f, start, label, kinds, BRANCH)
             if ow.label is not None and not found.computed:
                 self.jumps[key] = found
-        if found.breaks:
+        if found.broke:
             self.broken_while = True
         return found
 
