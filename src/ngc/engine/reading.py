@@ -14,14 +14,16 @@ WORDS = frozenset("FIJKPQR")
 _REFERENCE = re.compile(r"(V[XYZABCUVW]|P[XYZ]|[XYZABCUVWFIJKPQR])(?![A-Z])", re.IGNORECASE)
 
 _M_CODE = re.compile(r"m\d+", re.IGNORECASE)
+_EDGES = re.compile(r"^[\s,]+|[\s,]+$")
 
 Clauses = list[tuple[str, list[float]]]
 
 
 def strip(raw: str) -> str:
-    """The line without its comments (``( ... )`` and from ``;`` on)."""
+    """The line without its comments (``( ... )`` and from ``;`` on) and without the separators
+    (white space, commas) at its ends."""
     text = re.sub(r"\([^)]*\)", " ", raw)
-    return text.split(";", 1)[0].strip()
+    return _EDGES.sub("", text.split(";", 1)[0])
 
 
 def tokens(text: str) -> list[str]:
