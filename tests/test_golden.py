@@ -26,14 +26,12 @@ KNOWN: dict[str, str] = {
     "by 0.01 or more along X, as rs274 does in the fuzzer's programs; here, with a chamfer at the "
     "end of the move after the corner, rs274 crosses the moved lines instead (without the chamfer "
     "it rounds); how a chamfer there changes the corner is not known yet",
-    "lathe-known-arc-line-end-radius": "G7x: where a moved arc meets a line, rs274's circle has "
-    "the radius of the end scaled with the start or of the end moved along its own radius; "
-    "near-tangent corners ask for each in turn (this one the second, for an arc before the line)",
+    "lathe-known-arc-line-end-radius": "G7x: where a moved arc meets a line after it, rs274's "
+    "circle mostly has the radius of the arc's end scaled with its start (as for a line before "
+    "an arc); this near-tangent corner asks for the end moved along its own radius instead",
     "lathe-known-chamfer-moves-first-corner": "G7x: a chamfer at the end of a later move changes "
     "how rs274 rounds the profile's first outside corner and leaves the chamfer's own corner "
     "cut; the rule is not known yet (see also lathe-rough-pocket-g72-2-chamfer)",
-    "lathe-known-line-arc-end-radius": "G7x: the same choice for an arc after a line (this one "
-    "the first: an arc moved outward)",
     "nurbs-comp-on": "ngc refuses a G5.2 block while cutter compensation is on; rs274 runs it, "
     "dropping the move compensation holds, and offsets the next moves in a way not known yet",
 }

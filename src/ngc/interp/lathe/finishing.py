@@ -162,12 +162,13 @@ def _crossing(a: Seg, b: Seg, mirror: float, r_arc: float = 0.0) -> tuple[float,
 
 
 def _own_end_radius(arc: Seg, side: float, d: float) -> float:
-    """The radius of an arc's programmed end moved ``d`` to ``side`` along its own radius: its
-    circle where it meets a line before it (an arc before a line meets it at its moved, scaled,
-    end's radius); the two differ where a centre-format arc's end lies off its start's circle,
-    and near-tangent corners show which rs274 takes."""
+    """The radius of an arc's programmed end scaled with its start (see ``_move``): its circle
+    where it meets a line before it.  It differs from the end moved ``d`` along its own radius
+    where a centre-format arc's end lies off its start's circle; near-tangent corners (a line
+    into an arc moved inward or outward) show rs274 takes the scaled one."""
     toward_centre = side if arc.kind == CCW else -side
-    return math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz) - toward_centre * d
+    r_start = math.hypot(arc.x0 - arc.cx, arc.z0 - arc.cz)
+    return math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz) * (r_start - toward_centre * d) / r_start
 
 
 def _arc_end_at_corner(arc: Seg, corner: Seg) -> tuple[float, float]:
