@@ -27,7 +27,8 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   at the crossing nearer to where the first ends, an arc before the line first where the line
   crosses the arc itself; two circles: at the crossing right of the line from the first centre
   to the second in rs274's frame, which turns Z round for a profile going +Z and X round for
-  one whose last point lies below its first, G72's frame a quarter turn of it; the circles'
+  one whose last point lies below its first, the frame of G72 and of a G70 profile going along
+  X a quarter turn of it; the circles'
   radii: see ``_crossing``; carriers that just miss meet where they come closest).  An outside
   corner gets an arc about the programmed corner when the moved ends lie 0.01 or more apart
   along the profile's axis, else it is cut like an inside one; an arc before it ends where its
@@ -227,8 +228,8 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
         return list(moves), corners
     gz, gx = (abs(axis[0]), abs(axis[1])) if roughing else axis
     mirror = _mirror(profile, axis)
-    if roughing and axis[0] == 0.0:
-        mirror = -mirror  # (G72's frame: turned a quarter round)
+    if axis[0] == 0.0:
+        mirror = -mirror  # (along X, G72's or G70's: the frame turned a quarter round)
     shifted = [_move(seg, side, d) for seg in moves]
     out: list[Seg] = []
     for i, seg in enumerate(shifted):
