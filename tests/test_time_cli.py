@@ -222,7 +222,7 @@ def test_machine_file_errors(capsys: pytest.CaptureFixture[str], tmp_path: Path)
     bad.write_text("tool_change_time = -1\n")
     code, out, err = run(capsys, "time", "--machine", str(bad), path)
     assert (code, out) == (2, "")
-    assert "tool_change_time must be 0 or more" in err
+    assert "tool_change_time must be a number from 0 to 1000000, not -1" in err
     code, out, err = run(capsys, "time", "--machine", str(tmp_path), path)
     assert (code, out) == (2, "")
     assert "is not a regular file" in err

@@ -2,9 +2,11 @@
 file, or both (the TOML file over the INI file's machine).  ``docs/machine.md`` documents both
 formats key by key.
 
-Every value is checked where it is read: a value that is not a number, a limit, period or cycle
-time that is not positive, an unknown key or a missing axis limit raises :class:`NgcConfigError`
-with a message that names the file, the key and the value.
+Every value is checked where it is read: a value that is not a number, a number outside the
+key's range (:data:`RANGES`, listed in ``docs/machine.md``), an unknown key or a missing axis
+limit raises :class:`NgcConfigError` with a message that names the file, the key, the value and
+the range it must be in.  The ranges keep the planner's arithmetic finite: within them every
+time it works out is a number.
 """
 
 from __future__ import annotations
@@ -18,7 +20,7 @@ from typing import Any, NamedTuple, TypeVar
 from ..config.ini import BLANKS, Ini, parse_int, parse_real
 from ..config.tomlfile import read_toml
 from ..errors import NgcConfigError
-from .machine import ALL_AXES, DEFAULT_MACHINE, AxisLimits, Machine
+from .machine import ALL_AXES, DEFAULT_MACHINE, MAX_COORDINATE, AxisLimits, Machine
 
 __all__ = ["load_machine", "machine_from_ini", "machine_from_toml"]
 
@@ -39,31 +41,73 @@ AXIS_LIST = " ".join(ALL_AXES)
 TOML_UNITS = ("mm", "inch")
 
 
+class Range(NamedTuple):
+    """The values a key accepts, both ends included."""
+
+    low: float
+    high: float
+    integer: bool = False
+
+    def holds(self, value: float) -> bool:
+        return self.low <= value <= self.high  # (a NaN is not held)
+
+    def text(self, unit: str = "") -> str:
+        kind = "a whole number" if self.integer else "a number"
+        unit = f" {unit}" if unit else ""
+        return f"{kind} from {_decimal(self.low)} to {_decimal(self.high)}{unit}"
+
+
+def _decimal(value: float) -> str:
+    """``value`` written out in decimals (1000000, 0.000001), as a person types it."""
+    if value == int(value):
+        return str(int(value))
+    return f"{value:.12f}".rstrip("0")
+
+
+# The range of each kind of value, in machine units (degrees for A, B, C) and seconds.
+VELOCITY = Range(1e-6, 1e6)  # units/s
+ACCELERATION = Range(1e-6, 1e9)  # units/s²
+PERIOD = Range(1e-6, 1.0)  # s: the servo period
+CYCLE = Range(1e-6, 10.0)  # s: the task's and the I/O controller's cycle
+STANDSTILL = Range(0.0, 1e6)  # s: a tool change, a spindle start or stop
+DEPTH = Range(0, 1000, integer=True)  # moves: the planner's work grows with its look-ahead
+GAP_CYCLES = Range(0.0, 1e6)  # servo periods
+RAMP_FREQ = Range(1e-6, 1e6)  # Hz
+KINK_RATIO = Range(0.0, 1e6)  # a share of the acceleration (above 0.999 it acts as 0.999)
+POSITION = Range(-MAX_COORDINATE, MAX_COORDINATE)
+NANOSECONDS = Range(1000, 1_000_000_000, integer=True)  # [EMCMOT]SERVO_PERIOD: PERIOD in ns
+JOINTS = Range(1, 16, integer=True)  # [KINS]JOINTS (LinuxCNC's EMCMOT_MAX_JOINTS)
+RANGES: Mapping[str, Range] = MappingProxyType({
+    "max_velocity": VELOCITY, "max_acceleration": ACCELERATION,
+    "max_linear_velocity": VELOCITY, "max_linear_acceleration": ACCELERATION,
+    "servo_period": PERIOD, "task_cycle_time": CYCLE, "io_cycle_time": CYCLE,
+    "tool_change_time": STANDSTILL, "spindle_start_time": STANDSTILL,
+    "spindle_stop_time": STANDSTILL, "optimization_depth": DEPTH, "gap_cycles": GAP_CYCLES,
+    "ramp_freq": RAMP_FREQ, "kink_ratio": KINK_RATIO, "start": POSITION,
+})
+
+
 # --- LinuxCNC's INI file -------------------------------------------------------------------------
 
 
-def _positive_real(text: str) -> float | None:
-    value = parse_real(text)
-    return value if value is not None and math.isfinite(value) and value > 0.0 else None
+def _real_in(limits: Range) -> Callable[[str], float | None]:
+    """A converter: the INI value as a real number within ``limits``, else None."""
+    def convert(text: str) -> float | None:
+        value = parse_real(text)
+        return value if value is not None and limits.holds(value) else None
+    return convert
 
 
-def _non_negative_real(text: str) -> float | None:
-    value = parse_real(text)
-    return value if value is not None and math.isfinite(value) and value >= 0.0 else None
-
-
-def _non_negative_int(text: str) -> int | None:
-    value = parse_int(text)
-    return value if value is not None and value >= 0 else None
-
-
-def _positive_int(text: str) -> int | None:
-    value = parse_int(text)
-    return value if value is not None and value > 0 else None
+def _int_in(limits: Range) -> Callable[[str], int | None]:
+    """A converter: the INI value as a whole number within ``limits``, else None."""
+    def convert(text: str) -> int | None:
+        value = parse_int(text)
+        return value if value is not None and limits.holds(value) else None
+    return convert
 
 
 def _nanoseconds(text: str) -> float | None:
-    value = _positive_int(text)
+    value = _int_in(NANOSECONDS)(text)
     return None if value is None else value / NANOSECONDS_PER_SECOND
 
 
@@ -82,7 +126,6 @@ def _linear_units(text: str) -> str | None:
     return None
 
 
-POSITIVE = "a positive number"
 UNITS_EXPECTED = ("mm, inch (or in, metric, imperial) or the machine units per mm "
                   "(1.0 for mm, 0.03937 for inch)")
 
@@ -96,26 +139,27 @@ class IniKey(NamedTuple):
     expected: str
 
 
+def _ini_real(section: str, key: str, limits: Range, unit: str = "") -> IniKey:
+    return IniKey(section, key, _real_in(limits), limits.text(unit))
+
+
+BOOLEAN = "a boolean (1, 0, TRUE, FALSE, YES, NO, ON, OFF)"
 # The Machine fields read from the INI file (the axes are read by _ini_axes).
 INI_FIELDS: Mapping[str, IniKey] = MappingProxyType({
     "linear_units": IniKey("TRAJ", "LINEAR_UNITS", _linear_units, UNITS_EXPECTED),
-    "max_linear_velocity": IniKey("TRAJ", "MAX_LINEAR_VELOCITY", _positive_real, POSITIVE),
-    "max_linear_acceleration": IniKey("TRAJ", "MAX_LINEAR_ACCELERATION", _positive_real, POSITIVE),
+    "max_linear_velocity": _ini_real("TRAJ", "MAX_LINEAR_VELOCITY", VELOCITY),
+    "max_linear_acceleration": _ini_real("TRAJ", "MAX_LINEAR_ACCELERATION", ACCELERATION),
     "servo_period": IniKey("EMCMOT", "SERVO_PERIOD", _nanoseconds,
-                           "a positive whole number of nanoseconds"),
-    "task_cycle": IniKey("TASK", "CYCLE_TIME", _positive_real, "a positive number of seconds"),
-    "io_cycle": IniKey("EMCIO", "CYCLE_TIME", _positive_real, "a positive number of seconds"),
-    "arc_blend_enable": IniKey("TRAJ", "ARC_BLEND_ENABLE", _boolean,
-                               "a boolean (1, 0, TRUE, FALSE, YES, NO, ON, OFF)"),
-    "arc_blend_fallback_enable": IniKey("TRAJ", "ARC_BLEND_FALLBACK_ENABLE", _boolean,
-                                        "a boolean (1, 0, TRUE, FALSE, YES, NO, ON, OFF)"),
+                           NANOSECONDS.text("nanoseconds")),
+    "task_cycle": _ini_real("TASK", "CYCLE_TIME", CYCLE, "seconds"),
+    "io_cycle": _ini_real("EMCIO", "CYCLE_TIME", CYCLE, "seconds"),
+    "arc_blend_enable": IniKey("TRAJ", "ARC_BLEND_ENABLE", _boolean, BOOLEAN),
+    "arc_blend_fallback_enable": IniKey("TRAJ", "ARC_BLEND_FALLBACK_ENABLE", _boolean, BOOLEAN),
     "arc_blend_optimization_depth": IniKey("TRAJ", "ARC_BLEND_OPTIMIZATION_DEPTH",
-                                           _non_negative_int, "a whole number, 0 or more"),
-    "arc_blend_gap_cycles": IniKey("TRAJ", "ARC_BLEND_GAP_CYCLES", _non_negative_real,
-                                   "a number, 0 or more"),
-    "arc_blend_ramp_freq": IniKey("TRAJ", "ARC_BLEND_RAMP_FREQ", _positive_real, POSITIVE),
-    "arc_blend_kink_ratio": IniKey("TRAJ", "ARC_BLEND_KINK_RATIO", _non_negative_real,
-                                   "a number, 0 or more"),
+                                           _int_in(DEPTH), DEPTH.text()),
+    "arc_blend_gap_cycles": _ini_real("TRAJ", "ARC_BLEND_GAP_CYCLES", GAP_CYCLES),
+    "arc_blend_ramp_freq": _ini_real("TRAJ", "ARC_BLEND_RAMP_FREQ", RAMP_FREQ, "Hz"),
+    "arc_blend_kink_ratio": _ini_real("TRAJ", "ARC_BLEND_KINK_RATIO", KINK_RATIO),
 })
 
 
@@ -179,7 +223,7 @@ def _ini_joints(ini: Ini, coordinates: str) -> str:
     the ``coordinates=`` of [KINS]KINEMATICS, else [TRAJ]COORDINATES; [KINS]JOINTS, when given,
     says how many of them there are."""
     order = _kins_coordinates(ini) or coordinates
-    count = _ini_value(ini, "KINS", "JOINTS", _positive_int, "a positive whole number")
+    count = _ini_value(ini, "KINS", "JOINTS", _int_in(JOINTS), JOINTS.text())
     return order if count is None else order[:count]
 
 
@@ -189,7 +233,9 @@ def _limit_sections(axis: str, joints: str) -> list[str]:
 
 def _smallest(ini: Ini, sections: list[str], key: str) -> float | None:
     """The smallest ``key`` of the sections that set it: an axis is as slow as its slowest part."""
-    values = [_ini_value(ini, section, key, _positive_real, POSITIVE) for section in sections]
+    limits = RANGES[key.lower()]
+    values = [_ini_value(ini, section, key, _real_in(limits), limits.text())
+              for section in sections]
     found = [value for value in values if value is not None]
     return min(found) if found else None
 
@@ -242,39 +288,34 @@ def machine_from_ini(ini: Ini) -> Machine:
 # --- ngc's TOML machine file ---------------------------------------------------------------------
 
 
-def _number(value: object, where: str) -> float:
-    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
-        raise ValueError(f"{where} must be a number, not {value!r}")
+def _number(value: object, where: str, limits: Range) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float) or not limits.holds(value):
+        raise ValueError(f"{where} must be {limits.text()}, not {value!r}")
     return float(value)
 
 
-def _positive(value: object, where: str) -> float:
-    number = _number(value, where)
-    if number <= 0.0:
-        raise ValueError(f"{where} must be positive, not {value!r}")
-    return number
+def _ranged(limits: Range) -> Check:
+    """A check: a number (an integer for an integer range) within ``limits``."""
+    def check(value: object, where: str) -> object:
+        if limits.integer:
+            return _count(value, where, limits)
+        return _number(value, where, limits)
+    return check
 
 
-def _non_negative(value: object, where: str) -> float:
-    number = _number(value, where)
-    if number < 0.0:
-        raise ValueError(f"{where} must be 0 or more, not {value!r}")
-    return number
-
-
-def _count(value: object, where: str) -> int:
-    if isinstance(value, bool) or not isinstance(value, int) or value < 0:
-        raise ValueError(f"{where} must be a whole number, 0 or more, not {value!r}")
+def _count(value: object, where: str, limits: Range) -> int:
+    if isinstance(value, bool) or not isinstance(value, int) or not limits.holds(value):
+        raise ValueError(f"{where} must be {limits.text()}, not {value!r}")
     return value
 
 
-def _flag(value: object, where: str) -> bool:
+def _flag(value: object, where: str) -> object:
     if not isinstance(value, bool):
         raise ValueError(f"{where} must be true or false, not {value!r}")
     return value
 
 
-def _units(value: object, where: str) -> str:
+def _units(value: object, where: str) -> object:
     if value not in TOML_UNITS:
         raise ValueError(f"{where} must be \"mm\" or \"inch\", not {value!r}")
     return str(value)
@@ -285,23 +326,23 @@ Check = Callable[[object, str], object]
 # Top-level keys: TOML key -> (Machine field, check).
 TOML_SCALARS: Mapping[str, tuple[str, Check]] = MappingProxyType({
     "units": ("linear_units", _units),
-    "max_linear_velocity": ("max_linear_velocity", _positive),
-    "max_linear_acceleration": ("max_linear_acceleration", _positive),
-    "servo_period": ("servo_period", _positive),
-    "task_cycle_time": ("task_cycle", _positive),
-    "io_cycle_time": ("io_cycle", _positive),
-    "tool_change_time": ("tool_change_time", _non_negative),
-    "spindle_start_time": ("spindle_start_time", _non_negative),
-    "spindle_stop_time": ("spindle_stop_time", _non_negative),
+    "max_linear_velocity": ("max_linear_velocity", _ranged(VELOCITY)),
+    "max_linear_acceleration": ("max_linear_acceleration", _ranged(ACCELERATION)),
+    "servo_period": ("servo_period", _ranged(PERIOD)),
+    "task_cycle_time": ("task_cycle", _ranged(CYCLE)),
+    "io_cycle_time": ("io_cycle", _ranged(CYCLE)),
+    "tool_change_time": ("tool_change_time", _ranged(STANDSTILL)),
+    "spindle_start_time": ("spindle_start_time", _ranged(STANDSTILL)),
+    "spindle_stop_time": ("spindle_stop_time", _ranged(STANDSTILL)),
 })
 TOML_TABLES = ("coordinates", "axes", "blending", "start")
 TOML_BLENDING: Mapping[str, tuple[str, Check]] = MappingProxyType({
     "enable": ("arc_blend_enable", _flag),
     "fallback_enable": ("arc_blend_fallback_enable", _flag),
-    "optimization_depth": ("arc_blend_optimization_depth", _count),
-    "gap_cycles": ("arc_blend_gap_cycles", _non_negative),
-    "ramp_freq": ("arc_blend_ramp_freq", _positive),
-    "kink_ratio": ("arc_blend_kink_ratio", _non_negative),
+    "optimization_depth": ("arc_blend_optimization_depth", _ranged(DEPTH)),
+    "gap_cycles": ("arc_blend_gap_cycles", _ranged(GAP_CYCLES)),
+    "ramp_freq": ("arc_blend_ramp_freq", _ranged(RAMP_FREQ)),
+    "kink_ratio": ("arc_blend_kink_ratio", _ranged(KINK_RATIO)),
 })
 TOML_AXIS_KEYS = ("max_velocity", "max_acceleration")
 
@@ -342,7 +383,7 @@ def _toml_axis(name: str, entry: object, base: AxisLimits | None) -> AxisLimits:
     for key, value in _table(entry, where).items():
         if key not in TOML_AXIS_KEYS:
             raise _unknown(where, key, TOML_AXIS_KEYS)
-        given[key] = _positive(value, f"{where}.{key}")
+        given[key] = _number(value, f"{where}.{key}", RANGES[key])
     if base is None and len(given) < len(TOML_AXIS_KEYS):
         missing = ", ".join(key for key in TOML_AXIS_KEYS if key not in given)
         raise ValueError(f"{where}: a new axis needs max_velocity and max_acceleration "
@@ -392,7 +433,7 @@ def _start(value: object, base: Mapping[str, float], axes: Mapping[str, AxisLimi
         if _axis_letter(name, "start") not in axes:
             raise ValueError(f"start.{name}: the machine has no {name} axis "
                              f"(its axes: {', '.join(axes)})")
-        start[name] = _number(position, f"start.{name}")
+        start[name] = _number(position, f"start.{name}", POSITION)
     return {axis: start[axis] for axis in ALL_AXES if axis in start}
 
 

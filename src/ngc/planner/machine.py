@@ -16,6 +16,10 @@ from types import MappingProxyType
 LINEAR_AXES = "XYZUVW"
 ANGULAR_AXES = "ABC"
 ALL_AXES = "XYZABCUVW"  # the order of LinuxCNC's canon positions
+# machine units (degrees for A, B, C): the farthest a move (or the start position) may be from
+# the origin.  A thousand kilometres (or turns by the million) is past any machine, and keeps every
+# length, speed and time the planner works out finite (a coordinate of 1e160 squared is not).
+MAX_COORDINATE = 1e9
 
 
 @dataclass(frozen=True)
@@ -37,7 +41,9 @@ class Machine:
     """Everything the planner needs to know about the machine.
 
     Lengths are in ``linear_units`` ("mm" or "inch"), times in seconds.  An axis absent from
-    ``axes`` does not exist on the machine: moves of it are not timed.
+    ``axes`` does not exist on the machine: a move that changes its position is an error.  The
+    machine files' readers (:mod:`ngc.planner.config`) keep every value within the ranges
+    ``docs/machine.md`` lists.
     """
 
     axes: Mapping[str, AxisLimits] = field(default_factory=_default_axes)
