@@ -550,6 +550,9 @@ def _time_linuxcnc(options: argparse.Namespace, program: Program) -> int:
         result = _time_program(options, program, machine,
                                lambda sink: new_interpreter(sink, inputs, setup, write_files=False),
                                csv)
+        _print_time(options, program.name, result, machine)
+        if csv is not None:
+            csv.commit()  # the trajectory takes its name once everything else has gone well
     except NgcError as exc:
         sys.stderr.write(exc.render() + "\n")
         return EXIT_PROGRAM_ERROR
@@ -559,7 +562,6 @@ def _time_linuxcnc(options: argparse.Namespace, program: Program) -> int:
     finally:
         if csv is not None:
             csv.discard()  # after commit: nothing left to do
-    _print_time(options, program.name, result, machine)
     return EXIT_OK
 
 
@@ -567,7 +569,7 @@ def _time_program(options: argparse.Namespace, program: Program, machine: Planne
                   interpreter: Callable[[Sink], Interpreter],
                   csv: TrajectoryFile | None) -> TimeResult:
     """Run the program through the planner, with the progress line; the trajectory, if asked
-    for, is written to ``csv`` and committed.  Raises :class:`NgcError` on a program error."""
+    for, is written to ``csv`` (not committed).  Raises :class:`NgcError` on a program error."""
     from .planner.timing import time_lines
 
     writer = None
@@ -582,9 +584,8 @@ def _time_program(options: argparse.Namespace, program: Program, machine: Planne
         result = time_lines(progress.lines(handle), machine, interpreter, file=program.name,
                             reader=handle, on_segment=None if writer is None else writer.segment,
                             on_wait=None if writer is None else writer.wait)
-    if writer is not None and csv is not None:
+    if writer is not None:
         writer.finish(result.total_s)
-        csv.commit()
     return result
 
 

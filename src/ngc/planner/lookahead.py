@@ -16,6 +16,7 @@ import math
 from collections import deque
 from collections.abc import Callable
 
+from ..errors import NgcError
 from .arcjoin import (
     arc_arc_fit,
     arc_away_tolerance,
@@ -51,6 +52,13 @@ RAPID, FEED, ARC, BLEND = "rapid", "feed", "arc", "blend"
 Shape = Line | Arc | Piece | Corner | BlendArc
 
 SQRT3_2 = math.sqrt(3.0) / 2.0
+# s: the longest run the planner counts (some 31,700 years).  Past it a time is no estimate,
+# and its sums lose the servo period's precision long before they overflow.
+MAX_SECONDS = 1e12
+# the most of an axis's acceleration a kink or an exact-path corner may take: the moves beside it
+# keep at least the rest, whatever ARC_BLEND_KINK_RATIO says (a ratio of 1 or more would leave
+# them none, or less than none)
+MAX_KINK_SHARE = 0.999
 
 _new = tuple.__new__  # a NamedTuple made without its Python __new__
 
@@ -206,7 +214,7 @@ class Planner:
     def __init__(self, machine: Machine, done: Done) -> None:
         self.machine = machine
         self.period = machine.servo_period
-        self.kink_ratio = machine.arc_blend_kink_ratio
+        self.kink_ratio = min(machine.arc_blend_kink_ratio, MAX_KINK_SHARE)
         self.depth = max(1, machine.arc_blend_optimization_depth)
         axes = [machine.axes.get(a) for a in "XYZ"]
         # per axis X Y Z: 1 / acceleration (0: the axis has no limit)
@@ -272,7 +280,7 @@ class Planner:
             return
         if mode == EXACT:
             prev.term = EXACT
-            factor = 1.0 - max(self.kink_ratio, 0.001)
+            factor = 1.0 - max(self.kink_ratio, 1.0 - MAX_KINK_SHARE)
             prev.reduce = min(prev.reduce, factor)
             seg.reduce = min(seg.reduce, factor)
             return
@@ -460,6 +468,8 @@ class Planner:
             t, vout, peak = profile_time(vin, seg.vfinal, vmax, a, seg.length)
             if seg.ramp:
                 t, vout, peak = ramp_time(vin, seg.vfinal, a, seg.length, (t, vout, peak))
+        if not t <= MAX_SECONDS:  # (not a number either)
+            raise TooLong(seg.line)
         seg.vin = vin
         seg.vout = vout
         seg.peak = peak
@@ -504,6 +514,14 @@ class Planner:
     @property
     def total(self) -> float:
         return self.clock + self.group
+
+
+class TooLong(NgcError):
+    """A move, a standstill or a whole program that takes longer than :data:`MAX_SECONDS`."""
+
+    def __init__(self, line: int | None) -> None:
+        super().__init__(f"ngc time: the program runs for more than {MAX_SECONDS:g} s here: "
+                         "too long to time", line=line)
 
 
 def parabolic_overlap(seg: Segment, a1: float, peak: float, nxt: Segment) -> float:

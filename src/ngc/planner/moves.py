@@ -22,7 +22,7 @@ from ..canon import ops
 from ..errors import NgcError
 from .geometry import Line, Pos, arc_from_canon, nurbs_polyline
 from .lookahead import ARC, EXACT, FEED, PARABOLIC, RAPID, SQRT3_2, STOP, Planner, Segment
-from .machine import Machine
+from .machine import MAX_COORDINATE, Machine
 
 MM_PER_INCH = 25.4
 INITIAL_ARC_TOLERANCE_INCH = 0.001  # inch: the corner tolerance for arcs before any G61/G64
@@ -107,6 +107,8 @@ class PathSink:
         # (axis, (1 / velocity, 1 / acceleration)) for the axes that have limits
         self.inv_limits = [(i, (1.0 / lim[0], 1.0 / lim[1])) for i, lim in enumerate(limits)
                            if lim is not None]
+        # the axes of a position the machine does not have: a move may not change them
+        self.missing = tuple(i for i, lim in enumerate(limits) if lim is None)
         self.vcap = machine.max_linear_velocity
 
     # -- the sink protocol --------------------------------------------------------------------
@@ -284,6 +286,16 @@ class PathSink:
                 op[3] + g9[3] + g5[3] + t[3], op[4] + g9[4] + g5[4] + t[4],
                 op[5] + g9[5] + g5[5] + t[5])
 
+    def check(self, end: Pos, line: int, start: Pos | None = None) -> None:
+        """A move from ``start`` (the current position) to ``end`` that the machine can make:
+        every coordinate within :data:`MAX_COORDINATE` (a NaN is not), no change of an axis the
+        machine does not have.  Raises :class:`Unreachable` or :class:`MissingAxis`."""
+        within(end, line)
+        pos = self.pos if start is None else start
+        for i in self.missing:
+            if end[i] != pos[i]:
+                raise MissingAxis(AXES6[i], tuple(self.machine.axes), line)
+
     # -- moves --------------------------------------------------------------------------------
     def straight(self, end: Pos, line: int, feed: bool) -> None:
         if feed and self.merging:
@@ -295,6 +307,7 @@ class PathSink:
     def see_point(self, end: Pos, line: int) -> None:
         """Naive-CAM merging: extend the chain of straight feeds to ``end`` if every point of it
         stays within the tolerance of the straight line from its start to ``end``."""
+        self.check(end, line)
         f = self.fspeed
         pos = self.pos
         ex, ey, ez = end[0], end[1], end[2]
@@ -345,6 +358,8 @@ class PathSink:
                 parts: list[tuple[int, float]] | None = None, parts_length: float = 0.0) -> None:
         """A straight move; ``parts`` are the (line, length) of the programmed moves a naive-CAM
         chain merged into it, ``parts_length`` their sum."""
+        if not parts:  # (a chain's points were checked as they came)
+            self.check(end, line, start)
         dx, dy, dz = end[0] - start[0], end[1] - start[1], end[2] - start[2]
         da, db, dc = end[3] - start[3], end[4] - start[4], end[5] - start[5]
         length = math.sqrt(dx * dx + dy * dy + dz * dz)
@@ -405,6 +420,11 @@ class PathSink:
             normal[0], normal[1] = (normal[0] * self.cos_r - normal[1] * self.sin_r,
                                     normal[0] * self.sin_r + normal[1] * self.cos_r)
         start = self.pos
+        self.check(end, line)
+        within(c, line)
+        for i in (p1, p2):  # an arc turns both axes of its plane
+            if i in self.missing and (c[p1], c[p2]) != (start[p1], start[p2]):
+                raise MissingAxis(AXES6[i], tuple(self.machine.axes), line)
         shape = arc_from_canon(start, end, (c[0], c[1], c[2]),
                                (normal[0], normal[1], normal[2]), op.rotation)
         if (self.mode == PARABOLIC and self.naive_tol > 0.0 and self.plane == (0, 1, 2)
@@ -508,6 +528,35 @@ class PathSink:
         self.flush_chain()
         self.planner.stop()
         self.on_wait(kind, seconds, line)
+
+
+def within(point: Pos, line: int) -> None:
+    """Raise :class:`Unreachable` unless every coordinate of ``point`` is within
+    :data:`MAX_COORDINATE` of 0."""
+    top = MAX_COORDINATE
+    x, y, z, a, b, c = point
+    if not (-top <= x <= top and -top <= y <= top and -top <= z <= top
+            and -top <= a <= top and -top <= b <= top and -top <= c <= top):
+        raise Unreachable(point, line)
+
+
+class Unreachable(NgcError):
+    """A move to a point past :data:`MAX_COORDINATE` from the origin (or not a number)."""
+
+    def __init__(self, end: Pos, line: int) -> None:
+        far = ", ".join(f"{axis} {value:.6g}" for axis, value in zip(AXES6, end, strict=True)
+                        if not abs(value) <= MAX_COORDINATE)
+        super().__init__(f"ngc time: the move goes past {MAX_COORDINATE:g} machine units from "
+                         f"the origin ({far}): too far to time", line=line)
+
+
+class MissingAxis(NgcError):
+    """A move of an axis the machine does not have (one that leaves it where it is is fine)."""
+
+    def __init__(self, axis: str, axes: tuple[str, ...], line: int) -> None:
+        have = " ".join(axes) or "none"
+        super().__init__(f"ngc time: the move changes {axis}, and the machine has no {axis} axis "
+                         f"(its axes: {have})", line=line)
 
 
 class NoSpeed(NgcError):

@@ -23,7 +23,7 @@ from ..canon.ops import Sink
 from ..interp.interpreter import Interpreter
 from ..interp.source import ProgramReader, text_reader
 from ..options import MachineOptions, load_setup, new_interpreter
-from .lookahead import BLEND, Planner, Segment
+from .lookahead import BLEND, MAX_SECONDS, Planner, Segment, TooLong
 from .machine import DEFAULT_MACHINE, Machine
 from .moves import PathSink
 
@@ -144,6 +144,8 @@ class Timer:
 
     def segment(self, seg: Segment) -> None:
         r = self.result
+        if not self.planner.total <= MAX_SECONDS:
+            raise TooLong(seg.line)
         r.segments += 1
         r.length += seg.length
         t = seg.time - seg.overlap  # the overlap is counted with the move before
@@ -178,6 +180,8 @@ class Timer:
         if t <= 0.0:
             return
         start = self.planner.total
+        if not start + t <= MAX_SECONDS:
+            raise TooLong(line)
         self.planner.clock += t
         r = self.result
         r.by_kind[kind] += t
