@@ -103,14 +103,10 @@ SUBROUTINE_PATH_MAX_DIRS = 10
 USER_M_PATH_MAX_DIRS = 5
 
 
-def _body(line: str) -> str:
-    """A physical line without its newline."""
-    return line[:-1] if line.endswith("\n") else line
-
-
-def _ambiguous(line: str) -> bool:
-    """A CR that is not the last character before the newline (or the end of the file)."""
-    return "\r" in _body(line)[:-1]
+# An INI file is read whole; one larger than this is refused (LinuxCNC's run to tens of kilobytes).
+MAX_INI_BYTES = 4 << 20
+_HEADER = re.compile(r"^[ \t\v\f\r]*\[", re.MULTILINE)  # a line whose first non-blank is [
+_AMBIGUOUS_CR = re.compile(r"\r(?!\n|\Z)")  # a CR neither before a newline nor at the very end
 
 
 def _read_regular(name: str) -> bytes:
@@ -118,15 +114,24 @@ def _read_regular(name: str) -> bytes:
 
     A FIFO, device or socket is refused: on what ``stat`` sees before opening (a device is never
     opened), then on the open descriptor (a FIFO put there since is opened without blocking).
+    A file over :data:`MAX_INI_BYTES` is :class:`IniTooLarge`.
     """
     with contextlib.suppress(FileNotFoundError):
         _check_regular(name, os.stat(name).st_mode)
     try:
         with open(name, "rb", opener=_open_nonblocking) as handle:
-            _check_regular(name, os.fstat(handle.fileno()).st_mode)
-            return handle.read()
+            info = os.fstat(handle.fileno())
+            _check_regular(name, info.st_mode)
+            if info.st_size > MAX_INI_BYTES:
+                raise IniTooLarge(name)
+            data = handle.read(info.st_size + 1)
+            if len(data) > info.st_size:  # it grows (or stat does not know its size): read on
+                data += handle.read(MAX_INI_BYTES + 1 - len(data))
     except IsADirectoryError:
         return b""
+    if len(data) > MAX_INI_BYTES:  # (it grew since)
+        raise IniTooLarge(name)
+    return data
 
 
 def _check_regular(name: str, mode: int) -> None:
@@ -138,17 +143,43 @@ def _open_nonblocking(name: str, flags: int) -> int:
     return os.open(name, flags | os.O_NONBLOCK | os.O_NOCTTY)
 
 
-class Ini(NamedTuple):
-    """An INI file's text, searched on each lookup like rs274's reader does.
+class IniTooLarge(NgcConfigError):
+    """An INI file over :data:`MAX_INI_BYTES`."""
+
+    def __init__(self, name: str) -> None:
+        super().__init__(f"INI file {name} is larger than {MAX_INI_BYTES} bytes: not read",
+                         file=name)
+
+
+class Ini:
+    """An INI file's text, looked up the way rs274's reader searches it.
+
+    rs274 searches the file from its start on each lookup; the same answers come here from an
+    index made as the file is read (where each section's first header is) and, on a section's
+    first lookup, a table of its names (the first occurrence of each), so that reading a file
+    takes time in proportion to its length and a lookup none.
 
     >>> ini = Ini.parse("[VARS]\\nX = 10\\nX = 11\\n")
     >>> ini.get("VARS", "X"), ini.get("VARS", "x"), ini.get("vars", "X")
     ('10', None, None)
     """
 
-    lines: tuple[str, ...]
-    """The physical lines, each with its newline when it has one."""
-    path: str | None = None
+    __slots__ = ("_ambiguous_at", "_headers", "_names", "path", "text")
+
+    def __init__(self, text: str, path: str | None = None) -> None:
+        self.text = text
+        self.path = path
+        # where the line of the first ambiguous CR starts: no lookup reads past it
+        found = _AMBIGUOUS_CR.search(text)
+        self._ambiguous_at = len(text) + 1 if found is None else text.rfind("\n", 0,
+                                                                           found.start()) + 1
+        self._headers: dict[str, int] = {}  # section -> where its first header line starts
+        for match in _HEADER.finditer(text):
+            bracket = match.end() - 1
+            close = text.find("]", bracket, _line_end(text, bracket))
+            if close > 0:
+                self._headers.setdefault(text[bracket + 1 : close], match.start())
+        self._names: dict[str, dict[str, str | None]] = {}  # section -> name -> value
 
     @classmethod
     def read(cls, path: str | os.PathLike[str]) -> Ini:
@@ -161,11 +192,14 @@ class Ini(NamedTuple):
 
         Only a regular file (or a directory) is read: a FIFO, a device or a socket, also behind a
         symbolic link, is a file that cannot be opened, refused without waiting (a device is not
-        opened, a FIFO is opened with ``O_NONBLOCK``), where rs274 waits forever on a FIFO.
+        opened, a FIFO is opened with ``O_NONBLOCK``), where rs274 waits forever on a FIFO.  A
+        file of more than :data:`MAX_INI_BYTES` is refused (:class:`IniTooLarge`).
         """
         name = os.fspath(path)
         try:
             data = _read_regular(name)
+        except IniTooLarge:
+            raise
         except OSError as exc:
             raise NgcConfigError(f"Unable to open inifile:{name}:", file=name) from exc
         return cls.parse(data.decode("utf-8", "surrogateescape"), path=name)
@@ -173,70 +207,95 @@ class Ini(NamedTuple):
     @classmethod
     def parse(cls, text: str, path: str | None = None) -> Ini:
         """An INI file from its text."""
-        parts = text.split("\n")
+        return cls(text, path)
+
+    @property
+    def lines(self) -> tuple[str, ...]:
+        """The physical lines, each with its newline when it has one."""
+        parts = self.text.split("\n")
         lines = [part + "\n" for part in parts[:-1]]
         if parts[-1]:
             lines.append(parts[-1])
-        return cls(tuple(lines), path)
+        return tuple(lines)
 
     @property
     def dos_line_endings(self) -> bool:
         """The file has CR LF line endings (rs274 prints :data:`DOS_LINE_ENDINGS_WARNING`)."""
-        return any(_body(line).endswith("\r") for line in self.lines)
+        return "\r\n" in self.text or self.text.endswith("\r")
 
     @property
     def ambiguous_carriage_returns(self) -> bool:
         """The file has a CR inside a line (see :data:`AMBIGUOUS_CR_ERROR`)."""
-        return any(_ambiguous(line) for line in self.lines)
+        return self._ambiguous_at <= len(self.text)
+
+    def has_section(self, section: str) -> bool:
+        """A ``[section]`` header is in the file (searched or not: see :meth:`get`)."""
+        return section in self._headers
 
     def get(self, section: str, name: str) -> str | None:
         """The value of ``[section]name`` (case-sensitive), or ``None`` when it is not there."""
-        index = self._section_start(section)
-        if index is None:
-            return None
-        while index < len(self.lines):
-            logical = self._logical_line(index)
-            if logical is None:
-                return None
-            text, index = logical
-            stripped = text.lstrip(BLANKS)
-            if stripped.startswith("["):
-                return None
-            if stripped.startswith(("#", ";")):
-                continue
-            key = _NAME.match(stripped)
-            if key is None or key.group() != name:
-                continue
-            equals = stripped.find("=", key.end())
-            if equals < 0:
-                return None
-            return stripped[equals + 1 :].strip(BLANKS)
-        return None
+        names = self._names.get(section)
+        if names is None:
+            names = self._names[section] = self._section_names(section)
+        return names.get(name)
 
-    def _section_start(self, section: str) -> int | None:
-        """The index of the line after the first ``[section]`` header."""
-        for index, line in enumerate(self.lines):
-            if _ambiguous(line):
-                return None
+    def _section_names(self, section: str) -> dict[str, str | None]:
+        """The names of ``section`` up to the line that ends its search, each with the value of
+        its first occurrence (``None``: a line of that name without ``=``, which ends a lookup)."""
+        header = self._headers.get(section)
+        names: dict[str, str | None] = {}
+        if header is None or header >= self._ambiguous_at:
+            return names  # no header before the first ambiguous line: never found
+        text = self.text
+        position = _line_end(text, header) + 1
+        while position < len(text):
+            logical = self._logical_line(position)
+            if logical is None:
+                break
+            line, position = logical
             stripped = line.lstrip(BLANKS)
             if stripped.startswith("["):
-                close = stripped.find("]")
-                if close > 0 and stripped[1:close] == section:
-                    return index + 1
+                break
+            if stripped.startswith(("#", ";")):
+                continue
+            match = _NAME.match(stripped)
+            key = match.group() if match is not None else ""
+            if key not in names:
+                equals = stripped.find("=", len(key))
+                names[key] = None if equals < 0 else stripped[equals + 1 :].strip(BLANKS)
+        return names
+
+    def _logical_line(self, position: int) -> tuple[str, int] | None:
+        """The line at ``position`` joined with its continuations, and where the next one
+        starts; None where a line of an ambiguous CR or a continuation at the end comes first."""
+        text = self.text
+        joined = ""
+        while position < len(text):
+            if position >= self._ambiguous_at:
+                return None
+            end = _line_end(text, position)
+            line = text[position:end]
+            position = end + 1
+            if end < len(text) and line.endswith("\\"):
+                joined += line[:-1]
+                continue
+            return joined + line, position
         return None
 
-    def _logical_line(self, index: int) -> tuple[str, int] | None:
-        """The line at ``index`` joined with its continuations, and the index after them."""
-        text = ""
-        while index < len(self.lines):
-            line = self.lines[index]
-            index += 1
-            if _ambiguous(line):
-                return None
-            if not line.endswith("\\\n"):
-                return text + _body(line), index
-            text += line[:-2]
-        return None
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Ini) and (self.text, self.path) == (other.text, other.path)
+
+    def __hash__(self) -> int:
+        return hash((self.text, self.path))
+
+    def __repr__(self) -> str:
+        return f"Ini(path={self.path!r}, {len(self.text)} characters)"
+
+
+def _line_end(text: str, position: int) -> int:
+    """Where the line at ``position`` ends: its newline, or the end of the text."""
+    end = text.find("\n", position)
+    return len(text) if end < 0 else end
 
 
 def parse_real(text: str | None) -> float | None:

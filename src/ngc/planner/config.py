@@ -180,16 +180,6 @@ def _ini_value(ini: Ini, section: str, key: str, convert: Callable[[str], T | No
     return value
 
 
-def _has_section(ini: Ini, name: str) -> bool:
-    """A ``[name]`` header is in the file (the header syntax of :class:`Ini`)."""
-    for line in ini.lines:
-        stripped = line.lstrip(BLANKS)
-        close = stripped.find("]")
-        if stripped.startswith("[") and close > 0 and stripped[1:close] == name:
-            return True
-    return False
-
-
 def _letters(ini: Ini, section: str, key: str, text: str, letters: str) -> str:
     """Axis letters, blanks between them allowed, any case; anything else is an error."""
     found = "".join(letters.split()).upper()
@@ -203,7 +193,7 @@ def _ini_coordinates(ini: Ini) -> str:
     the axes that have an [AXIS_<letter>] section."""
     text = ini.get("TRAJ", "COORDINATES")
     if text is None:
-        return "".join(axis for axis in ALL_AXES if _has_section(ini, f"AXIS_{axis}"))
+        return "".join(axis for axis in ALL_AXES if ini.has_section(f"AXIS_{axis}"))
     return _letters(ini, "TRAJ", "COORDINATES", text, text)
 
 
