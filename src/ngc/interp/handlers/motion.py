@@ -230,7 +230,7 @@ def _ijk_center(
         raise NgcSemanticError(f"Zero-radius arc: {where}")
     abs_err = abs(r1 - r2)
     tol = CENTER_ARC_TOLERANCE_MM if it.state.metric else CENTER_ARC_TOLERANCE_INCH
-    if abs_err > tol:
+    if abs_err > tol and it.profile is None:  # (a lathe cycle's profile: held when it is cut)
         rel_err = abs_err / max(r1, r2)
         if abs_err > 100 * tol or rel_err > CENTER_ARC_RELATIVE_TOLERANCE:
             where = _arc_where(labels, s1, s2, c1, c2, e1, e2, r1, r2)

@@ -23,18 +23,18 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   division) to that side; a negative distance moves it the other way.  Lines move along their
   normal; an arc keeps its centre and is scaled about it by its start's new radius over its old
   one (a centre-format arc's end a little off its start's circle keeps that proportion).
-* Corners: an inside corner is cut back to where the moved carriers cross (a line and a circle:
-  at the crossing nearer to where the first ends, an arc before the line first where the line
-  crosses the arc itself; two circles: at the crossing right of the line from the first centre
-  to the second in rs274's frame, which turns Z round for a profile going +Z and X round for
-  one whose last point lies below its first, the frame of G72 and of a G70 profile going along
-  X a quarter turn of it; the circles'
-  radii: see ``_crossing``; carriers that just miss meet where they come closest).  An outside
-  corner gets an arc about the programmed corner when the moved ends lie 0.01 or more apart
-  along the profile's axis, else it is cut like an inside one; an arc before it ends where its
-  circle meets the circle about the corner through its scaled end (the crossing farther along
-  it), and G70 holds the corner arc to a programmed arc's radius tolerance.  Two moved lines in
-  line at a corner: "G7X error: Cannot intersect parallel lines".
+* Corners: an inside corner is cut back to where the moved carriers cross (a line and a circle: at
+  the crossing nearer to where the first ends, an arc before the line first where the line crosses
+  the arc itself; two circles: at the crossing right of the line from the first centre to the
+  second in rs274's frame, which turns Z round for a profile going +Z and X round for one whose
+  last point lies below its first, the frame of G72 and of a G70 profile going along X a quarter
+  turn of it; the circles' radii: see ``_crossing``; carriers that just miss meet where they come
+  closest). An outside corner gets an arc about the programmed corner when the moved ends lie 0.01
+  or more apart along the profile's axis, else it is cut like an inside one; an arc before it ends
+  where its circle meets the circle about the corner through its scaled end (the crossing farther
+  along it). A corner whose tangents turn by less than 1e-6 is no outside corner. Every arc a pass
+  cuts is held to a programmed arc's radius tolerance (the profile's own arcs are not held when it
+  is read). Two moved lines in line at a corner: "G7X error: Cannot intersect parallel lines".
 * Each pass: a traverse to ``I``, a traverse to the moved profile's first point, then G1/G2/G3
   feeds along it.  The tool is left at the last pass's end (the profile's end moved E); there is
   no move back.
@@ -55,6 +55,9 @@ from .zeros import turning_zeros
 # an outside corner whose moved ends lie closer than this along the profile's axis is cut like
 # an inside one, not rounded
 ROUNDED = 0.01
+
+# corners whose tangents turn (sine) by less than this are tangent: no outside corner
+TANGENT = 1e-6
 
 
 # a step smaller than this is none (the last digits an incremental move leaves)
@@ -246,7 +249,7 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
             out.append(seg)
             continue
         corner = moves[i]
-        outside = turn * side * d < 0
+        outside = turn * side * d < 0 and abs(turn) >= TANGENT
         ex, ez = prev.x1, prev.z1
         if outside and prev.kind != LINE:
             ex, ez = _arc_end_at_corner(shifted[i - 1], corner)
@@ -303,7 +306,7 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
     turned = turning_zeros(profile[-1].x1 < first.x1, axis[0] > 0)
     for k in range(passes, 0, -1):
         dist = (k - 1) * (d - e) / p + e
-        path, corners = moved_with_corners(profile, side, dist, axis)
+        path = moved(profile, side, dist, axis)
         out.zeros = None  # (the entry is not in the frame)
         out.traverse(*entry)
         out.zeros = turned if dist else None
@@ -311,8 +314,8 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
             out.traverse(path[0].x0, path[0].z0)
         else:
             out.traverse(first.x1, first.z1)
-        for i, seg in enumerate(path):
+        for seg in path:
             if seg.kind == LINE:
                 out.feed(seg.x1, seg.z1)
             else:
-                out.arc(seg.x1, seg.z1, seg.cx, seg.cz, seg.kind, checked=i in corners)
+                out.arc(seg.x1, seg.z1, seg.cx, seg.cz, seg.kind, checked=True)

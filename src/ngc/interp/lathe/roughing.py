@@ -160,7 +160,7 @@ def _emit(out: Out, seg: Seg) -> None:
     if seg.kind == LINE:
         out.feed(seg.x1, seg.z1)
     else:
-        out.arc(seg.x1, seg.z1, seg.cx, seg.cz, seg.kind)
+        out.arc(seg.x1, seg.z1, seg.cx, seg.cz, seg.kind, checked=True)
 
 
 def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d: float,
