@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import math
+import time
 from pathlib import Path
 
 import pytest
@@ -17,6 +18,7 @@ from ngc.planner.lookahead import MAX_SECONDS
 from ngc.planner.machine import DEFAULT_MACHINE, AxisLimits, Machine
 from ngc.planner.moves import MAX_COORDINATE
 from ngc.planner.timing import time_text
+from ngc.planner.trajectory import DEFAULT_MAX_ROWS
 
 NINES = "9" * 160
 
@@ -179,3 +181,53 @@ def test_json_report_on_a_kink_ratio_of_two(capsys: pytest.CaptureFixture[str],
     code, out, err = run(capsys, "time", "--machine", toml, "--format", "json", path)
     assert (code, err) == (0, "")
     assert math.isfinite(json.loads(out)["total_s"])
+
+
+# -- the trajectory's size -----------------------------------------------------------------------
+DAY = "G1 X100000000 F6000\nG4 P1\nG4 P1\nM2 %\n"  # some 11.6 days of motion
+
+
+def test_a_trajectory_past_the_row_limit_stops_at_once(capsys: pytest.CaptureFixture[str],
+                                                       tmp_path: Path) -> None:
+    path = write(tmp_path, "p.ngc", DAY)
+    started = time.perf_counter()
+    code, out, err = run(capsys, "time", "--trajectory", str(tmp_path / "t.csv"), path)
+    assert time.perf_counter() - started < 30.0  # (it wrote rows for minutes)
+    assert (code, out) == (2, "")
+    assert err.startswith(f"ngc time: the trajectory would have more than {DEFAULT_MAX_ROWS} "
+                          "rows (a row every 0.001 s up to ")
+    assert err.endswith("s at least): give --every a larger spacing or --max-rows a larger "
+                        "number\n")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["p.ngc"]
+
+
+@pytest.mark.parametrize(("text", "rows"), [
+    ("G61.1 G1 X100 F6000\nM2\n", 1102),  # 1.1 s: 1100 rows, a last one, and the header
+    ("G4 P0.5\nM2\n", 502),
+])
+def test_max_rows_bounds_the_rows(capsys: pytest.CaptureFixture[str], tmp_path: Path,
+                                  text: str, rows: int) -> None:
+    path = write(tmp_path, "p.ngc", text)
+    csv = tmp_path / "t.csv"
+    code, _, err = run(capsys, "time", "--trajectory", str(csv), "--max-rows", str(rows - 1),
+                       path)
+    assert (code, err) == (0, "")
+    assert len(csv.read_text().splitlines()) == rows
+    csv.unlink()
+    code, out, err = run(capsys, "time", "--trajectory", str(csv), "--max-rows", str(rows - 2),
+                         path)
+    assert (code, out) == (2, "")
+    assert f"more than {rows - 2} rows" in err
+    assert not csv.exists()
+    code, _, _ = run(capsys, "time", "--trajectory", str(csv), "--max-rows", str(rows - 2),
+                     "--every", "0.01", path)
+    assert code == 0
+
+
+def test_max_rows_needs_a_trajectory(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    path = write(tmp_path, "p.ngc", "G0 X1\nM2\n")
+    assert run(capsys, "time", "--max-rows", "5", path) == (
+        2, "", "ngc time: --max-rows needs --trajectory\n")
+    code, out, err = run(capsys, "time", "--trajectory", "t.csv", "--max-rows", "0", path)
+    assert (code, out) == (2, "")
+    assert "argument --max-rows: needs a positive number, not '0'" in err

@@ -194,6 +194,9 @@ def _add_time(sub: argparse._SubParsersAction[argparse.ArgumentParser],
                       "machine's rotary axes), velocity, line")
     time.add_argument("--every", metavar="SECONDS", type=_seconds,
                       help="the trajectory's sample spacing (default: the servo period)")
+    time.add_argument("--max-rows", metavar="N", type=_positive, default=None,
+                      help="the most rows the trajectory may have: a program that would make "
+                      "more stops with an error and leaves no file (default 10000000)")
     time.add_argument("--top", metavar="N", type=_count, default=10,
                       help="how many of the slowest lines to list (default 10)")
     time.set_defaults(run=run_time)
@@ -516,9 +519,10 @@ def run_time(options: argparse.Namespace) -> int:
     object on stdout, and with ``--trajectory`` the sampled motion in a CSV file.  Exit 2 for a
     bad machine input, a file that cannot be read or written, or an engine-dialect program; 1
     for a program error (nothing is printed on stdout then)."""
-    if options.every is not None and options.trajectory is None:
-        sys.stderr.write("ngc time: --every needs --trajectory\n")
-        return EXIT_USAGE
+    for name, value in (("--every", options.every), ("--max-rows", options.max_rows)):
+        if value is not None and options.trajectory is None:
+            sys.stderr.write(f"ngc time: {name} needs --trajectory\n")
+            return EXIT_USAGE
     program = _open_marked(options.file, options.dialect)
     try:
         if program.dialect == ENGINE:
@@ -532,6 +536,7 @@ def run_time(options: argparse.Namespace) -> int:
 def _time_linuxcnc(options: argparse.Namespace, program: Program) -> int:
     from . import time_report  # loaded on use, as the planner is
     from .planner.config import load_machine
+    from .planner.trajectory import TooManyRows
 
     try:
         inputs, setup = _setup("time", options)
@@ -556,7 +561,7 @@ def _time_linuxcnc(options: argparse.Namespace, program: Program) -> int:
     except NgcError as exc:
         sys.stderr.write(exc.render() + "\n")
         return EXIT_PROGRAM_ERROR
-    except time_report.TrajectoryWriteError as exc:
+    except (time_report.TrajectoryWriteError, TooManyRows) as exc:
         sys.stderr.write(f"ngc time: {exc}\n")
         return EXIT_USAGE
     finally:
@@ -574,10 +579,13 @@ def _time_program(options: argparse.Namespace, program: Program, machine: Planne
 
     writer = None
     if csv is not None:
-        from .planner.trajectory import TrajectoryWriter  # loaded only for --trajectory
+        from .planner.trajectory import (  # loaded only for --trajectory
+            DEFAULT_MAX_ROWS,
+            TrajectoryWriter,
+        )
 
         every = machine.servo_period if options.every is None else options.every
-        writer = TrajectoryWriter(csv, machine, every)
+        writer = TrajectoryWriter(csv, machine, every, options.max_rows or DEFAULT_MAX_ROWS)
     assert program.handle is not None
     handle = text_reader(program.handle)
     with handle, _progress(program.name, handle, output_to_terminal=False) as progress:

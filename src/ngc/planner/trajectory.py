@@ -32,6 +32,17 @@ ALWAYS = "XYZ"  # columns written whatever the machine's axes
 ROTARY = "ABC"  # columns written only for a machine with that axis
 TIME_EPSILON = 1e-9  # s: a sample this close to a boundary belongs to the time after it
 TANGENT_STEP = 1e-6  # relative to a segment's length: the step of a numerical tangent
+DEFAULT_MAX_ROWS = 10_000_000  # rows of a trajectory: some 2.8 hours at one a millisecond
+
+
+class TooManyRows(Exception):
+    """The trajectory would have more rows than its writer may write; the message says how
+    to get one."""
+
+    def __init__(self, end: float, every: float, max_rows: int) -> None:
+        super().__init__(f"the trajectory would have more than {max_rows} rows (a row every "
+                         f"{every:g} s up to {end:.3f} s at least): give --every a larger "
+                         "spacing or --max-rows a larger number")
 
 
 class Writable(Protocol):
@@ -169,13 +180,17 @@ class TrajectoryWriter:
     Give it each finished segment (:meth:`segment`) and standstill (:meth:`wait`) in time order,
     as :class:`~ngc.planner.timing.Timer` calls its listeners.  Positions are in machine units
     (degrees for A, B and C), the velocity is the path speed in machine units per second.
+    A segment or standstill that ends past the time of ``max_rows`` rows raises
+    :class:`TooManyRows` before any of its rows is written.
     """
 
-    def __init__(self, out: Writable, machine: Machine, every: float) -> None:
+    def __init__(self, out: Writable, machine: Machine, every: float,
+                 max_rows: int = DEFAULT_MAX_ROWS) -> None:
         if not every > 0.0:
             raise ValueError(f"the sample spacing must be positive, not {every!r}")
         self._write = out.write
         self._every = every
+        self._max_rows = max_rows
         self._k = 0  # the next sample is at k * every
         self._columns = [i for i, axis in enumerate(POSITION_AXES)
                          if axis in ALWAYS or axis in machine.axes]
@@ -190,19 +205,29 @@ class TrajectoryWriter:
 
     def segment(self, seg: Segment) -> None:
         """A finished segment: every sample before it starts is now known."""
+        self._room(seg.t0 + seg.time)
         self._until(seg.t0)
         self._active.append(Profile.of(seg))
 
     def wait(self, kind: str, start: float, seconds: float, line: int) -> None:
         """A standstill of ``seconds`` from ``start``: motion has stopped before it."""
+        self._room(start + seconds)
         self._until(start)
         self._line = line
         self._until(start + seconds)
 
     def finish(self, total: float) -> None:
         """The program ends at ``total`` seconds: the rows up to it, and one at ``total``."""
+        self._room(total)
         self._until(total)
         self._emit(total)
+
+    def _room(self, end: float) -> None:
+        """Raise :class:`TooManyRows` if the rows up to ``end``, and the last one, would be more
+        than the writer may write."""
+        rows = math.ceil(end / self._every - TIME_EPSILON) + 1
+        if rows > self._max_rows:
+            raise TooManyRows(end, self._every, self._max_rows)
 
     def _until(self, end: float) -> None:
         """Write the samples before ``end``."""
