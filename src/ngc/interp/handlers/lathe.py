@@ -11,6 +11,7 @@ cycle itself is shown at the subroutine's last line.
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 from ...errors import NgcSemanticError
@@ -98,6 +99,8 @@ def cycle(m: Machine, r: Words, code: int) -> None:
     profile, (file, line, source) = _record(m, w["q"], start)
     m.line = r_where[1]  # the label stays the one of the subroutine's last line, as in rs274
     try:
+        if any(math.isnan(seg.cx) for seg in profile):  # (an R arc whose R cannot reach)
+            raise NgcSemanticError(NOT_MONOTONIC)
         if code != 700 and w.get("d", 0.0):  # (before anything else, even an A of 0)
             check_joinable(profile[1:])
         profile = round_corners(profile)
@@ -156,7 +159,7 @@ def _record(m: Machine, q: float, start: tuple[float, float]
         params.numbered[:] = numbered
         params.globals.clear()
         params.globals.update(named)
-    if done:
+    if done and profile:  # (a profile of no move leaves the point where the traverse went)
         _move_to(m, last[0], last[2])
     return profile, where
 

@@ -170,9 +170,9 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     fr = _Frame(code >= 720)
     variant = code % 10
     sa, sb = fr.ab(*start)
-    approach, rest = profile[0], profile[1:]
-    if not rest:  # the approach alone: nothing to cut
+    if len(profile) < 2:  # no move, or the approach alone: nothing to cut
         return
+    approach, rest = profile[0], profile[1:]
     p0a = fr.ab(approach.x1, approach.z1)[0]
     ea = fr.ab(rest[-1].x1, rest[-1].z1)[0]
     if fr.swap:
