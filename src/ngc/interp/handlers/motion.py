@@ -265,8 +265,13 @@ def _radius_center(
     # the half chord from the midpoint, as rs274 measures it (a midpoint past the largest
     # number makes it infinite: "too small")
     half = math.hypot(e1 - m1, e2 - m2)
-    if abs_r < half - tol:
-        raise NgcSemanticError("Arc radius too small to reach end point")
+    if abs_r < half:
+        if it.profile is not None:
+            # a lathe cycle's profile: rs274 finds no centre (it reports "G7X error: Not
+            # monotonic" when the cycle runs), nor forgives the last digits
+            return math.nan, math.nan
+        if abs_r < half - tol:
+            raise NgcSemanticError("Arc radius too small to reach end point")
     abs_r = max(abs_r, half)
     theta = math.atan2(e2 - s2, e1 - s1)
     # For G2 the center lies right of the chord (left for G3); a negative R takes the far side.
