@@ -56,6 +56,9 @@ from .zeros import turning_zeros
 # an inside one, not rounded
 ROUNDED = 0.01
 
+# two crossings this much as far from an end (relative) are as near
+_TIE = 1e-9
+
 # corners whose tangents turn (sine) by less than this are tangent: no outside corner
 TANGENT = 1e-6
 
@@ -147,11 +150,13 @@ def _crossing(a: Seg, b: Seg, mirror: float, r_arc: float = 0.0) -> tuple[float,
             return fx, fz
         h = math.sqrt(h2 / n2)
         roots = [(fx - h * dx, fz - h * dz), (fx + h * dx, fz + h * dz)]
-        # the nearer to where ``a`` ends; an arc ``a`` first where it crosses the line itself
-        # (bulging across the line it meets it twice, as far from its end either way)
-        return min(roots, key=lambda pt: (
-            arc is a and not within(arc, math.atan2(pt[0] - arc.cx, pt[1] - arc.cz)),
-            math.hypot(pt[0] - a.x1, pt[1] - a.z1)))
+        # the nearer to where ``a`` ends; as near either way (an arc ``a`` bulging across the
+        # line, ending where the line touches its circle), where the line crosses the arc itself
+        near = [math.hypot(pt[0] - a.x1, pt[1] - a.z1) for pt in roots]
+        if arc is a and abs(near[0] - near[1]) <= _TIE * max(1.0, near[0]):
+            return min(roots, key=lambda pt: not within(
+                arc, math.atan2(pt[0] - arc.cx, pt[1] - arc.cz)))
+        return roots[0] if near[0] <= near[1] else roots[1]
     r1 = math.hypot(a.x0 - a.cx, a.z0 - a.cz)
     r2 = math.hypot(b.x0 - b.cx, b.z0 - b.cz)
     dz, dx = b.cz - a.cz, b.cx - a.cx
@@ -305,6 +310,7 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
     # does not keeps the profile's own
     turned = turning_zeros(profile[-1].x1 < first.x1, axis[0] > 0)
     for k in range(passes, 0, -1):
+        out.m.work()  # (P sets how many passes there are)
         dist = (k - 1) * (d - e) / p + e
         path = moved(profile, side, dist, axis)
         out.zeros = None  # (the entry is not in the frame)
