@@ -76,9 +76,11 @@ class Host(Protocol):
 # Call levels rs274 allows below the main program.
 MAX_CALL_DEPTH = 9
 # The work budget of one run: loop iterations (endwhile, endrepeat, do-while, continue, M98 L
-# repeats) and subroutine calls (o-word call, M98) count against it, so an endless
-# ``o100 while [1]`` or a subroutine that calls itself many times per level ends with an error
-# instead of running (practically) forever.
+# repeats), subroutine calls (o-word call, M98) and the iterations of the loops inside codes whose
+# counts the program's numbers set (``Machine.work``: canned cycle repeats and pecks, G76 passes,
+# G70-G72 passes) count against it, so an endless ``o100 while [1]``, a subroutine that calls
+# itself many times per level or a G76 with a depth of 1e-5 ends with an error instead of running
+# (practically) forever.
 DEFAULT_MAX_ITERATIONS = 10_000_000
 ARGUMENT_PARAMETERS = 30
 _LOOPS = ("while", "do")

@@ -73,6 +73,7 @@ class Interpreter:
         m.probe = probe
         m.run_text = self._run_text
         m.run_profile = self._run_profile
+        m.work = self._work
         self.sink = sink
         self.state: State = m.state
         self.state.blocks_deleted = block_delete
@@ -386,6 +387,10 @@ class Interpreter:
             self.dispatcher.convert(m, r)
         except NgcError as err:
             raise err.locate(file=self.file, line=block.line, source=block.source) from None
+
+    def _work(self) -> None:
+        """One iteration of a code's loop (``Machine.work``), against this run's budget."""
+        self.flow.again()
 
     def _run_text(self, text: str) -> None:
         """A line a handler has the interpreter run (an M72 restore), at the running line."""

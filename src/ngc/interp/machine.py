@@ -24,12 +24,16 @@ if TYPE_CHECKING:
     from .comp import Compensation
 
 
+def _unbounded() -> None:
+    """No work budget: a machine run without an interpreter."""
+
+
 class Machine:
     """State, parameters, the sink, and the files a program opens (logs)."""
 
     __slots__ = ("comp", "contexts", "encoding", "ended", "held", "label", "line", "log", "move",
                  "params", "probe", "probe_log", "profile", "run_profile", "run_text", "sink",
-                 "state", "write_files")
+                 "state", "work", "write_files")
 
     def __init__(self, sink: Sink, write_files: bool = True) -> None:
         self.sink = sink
@@ -66,6 +70,11 @@ class Machine:
         # cycle runs its subroutine ``o<q> call`` (the interpreter sets it).
         self.profile: list[Any] | None = None
         self.run_profile: Callable[[float], tuple[str | None, int, str]] | None = None
+        # One iteration of a loop inside a code whose count the program's numbers set (a canned
+        # cycle's repeats and pecks, G76's passes, G70-G72's passes), against the run's work
+        # budget (flow.py, ``--max-iterations``); the interpreter sets it, a machine alone has
+        # no budget.
+        self.work: Callable[[], None] = _unbounded
 
     @property
     def tools(self) -> Tools:

@@ -112,6 +112,7 @@ def _pecks(it: Machine, at: list[float], axis: int, bottom: float, rr: float, cl
     back = _PECK_CLEARANCE_MM if it.state.metric else _PECK_CLEARANCE_INCH
     depth = rr - delta
     while depth > bottom:
+        it.work()  # (Q sets how many pecks there are)
         _feed(it, _at(at, axis, depth))
         if out:
             motion.traverse(it, _at(at, axis, rr))
@@ -329,6 +330,7 @@ def _cycle(it: Machine, r: Resolved, code: int, body: Body, dwells: int,
         st.cycle_q = dwell
     polar = "@" in w or "^" in w
     for _ in range(repeats):
+        it.work()
         if polar:  # the XY point from its distance and angle (in G91: added to the current ones)
             at[0], at[1] = motion.polar_end(at, w, st.absolute)[:2]
         for i in range(len(at)):

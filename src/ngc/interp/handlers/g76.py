@@ -145,6 +145,7 @@ class _Cycle:
 
     def one_pass(self, depth: float) -> None:
         it = self.it
+        it.work()  # (J, K, R and H set how many passes there are)
         emit = it.emit
         pos = self.pos
         y, rest = pos[1], pos[3:]

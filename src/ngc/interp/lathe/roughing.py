@@ -245,6 +245,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     k = 0
     if variant != 2:
         while True:
+            out.m.work()  # (I sets how many levels there are)
             up = turned(k)
             level = turn * up
             if s * level >= s * p0a - EPS:
@@ -300,6 +301,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                 from_top[:] = [top]
             k = 0
             while True:
+                out.m.work()
                 if variant == 2:
                     while len(from_top) <= k:
                         from_top.append(from_top[-1] + s * inc)
