@@ -31,8 +31,8 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   turn of it; the circles' radii: see ``_crossing``; carriers that just miss meet where they come
   closest). An outside corner gets an arc about the programmed corner when the moved ends lie 0.01
   or more apart along the profile's axis, else it is cut like an inside one; an arc before it ends
-  where its circle meets the circle about the corner through its scaled end (the crossing farther
-  along it). A corner whose tangents turn by less than 1e-6 is no outside corner. Every arc a pass
+  where its circle meets the circle about the corner through its scaled end (the crossing right
+  of the line from its centre to the corner in rs274's frame). A corner whose tangents turn by less than 1e-6 is no outside corner. Every arc a pass
   cuts is held to a programmed arc's radius tolerance (the profile's own arcs are not held when it
   is read). Two moved lines in line at a corner: "G7X error: Cannot intersect parallel lines".
 * Each pass: a traverse to ``I``, a traverse to the moved profile's first point, then G1/G2/G3
@@ -180,12 +180,13 @@ def _own_end_radius(arc: Seg, side: float, d: float) -> float:
     return math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz) * (r_start - toward_centre * d) / r_start
 
 
-def _arc_end_at_corner(arc: Seg, corner: Seg) -> tuple[float, float]:
+def _arc_end_at_corner(arc: Seg, corner: Seg, mirror: float) -> tuple[float, float]:
     """Where a moved arc ends at an outside corner, as rs274 finds it: where its circle, of its
     moved start's radius, meets the circle about the programmed corner through its moved end
     (the point on the line between their centres where they miss each other, as a
     centre-format arc whose end lies beyond its start's circle makes them: measured at 1000
-    times the size); of two crossings, the one farther along the arc."""
+    times the size); of two crossings, the one right of the line from the arc's centre to the
+    corner in rs274's frame (``mirror``), as two moved arcs cross."""
     r1 = math.hypot(arc.x0 - arc.cx, arc.z0 - arc.cz)
     r2 = math.hypot(arc.x1 - corner.x0, arc.z1 - corner.z0)
     dx, dz = corner.x0 - arc.cx, corner.z0 - arc.cz
@@ -195,15 +196,9 @@ def _arc_end_at_corner(arc: Seg, corner: Seg) -> tuple[float, float]:
     h2 = r1 * r1 - along * along
     if h2 <= 0:
         return mx, mz
-    h = math.sqrt(h2) / dist
-    points = ((mx - h * dz, mz + h * dx), (mx + h * dz, mz - h * dx))
-    start = math.atan2(arc.x0 - arc.cx, arc.z0 - arc.cz)
-    way = 1.0 if arc.kind == CCW else -1.0
-
-    def travel(pt: tuple[float, float]) -> float:
-        return (way * (math.atan2(pt[0] - arc.cx, pt[1] - arc.cz) - start)) % (2 * math.pi)
-
-    return max(points, key=travel)
+    # right of (dz, dx) in (z, x) is (dx, -dz), in rs274's frame (``mirror``)
+    h = math.sqrt(h2) / dist * mirror
+    return mx - h * dz, mz + h * dx
 
 
 def _mirror(profile: Profile, axis: tuple[float, float]) -> float:
@@ -257,7 +252,7 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
         outside = turn * side * d < 0 and abs(turn) >= TANGENT
         ex, ez = prev.x1, prev.z1
         if outside and prev.kind != LINE:
-            ex, ez = _arc_end_at_corner(shifted[i - 1], corner)
+            ex, ez = _arc_end_at_corner(shifted[i - 1], corner, mirror)
         gap = (seg.z0 - ez) * gz + (seg.x0 - ex) * gx
         if outside and abs(gap) >= ROUNDED:
             # the moved segments part (an outside corner): an arc about the corner joins them
