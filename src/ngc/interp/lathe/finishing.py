@@ -31,10 +31,11 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   turn of it; the circles' radii: see ``_crossing``; carriers that just miss meet where they come
   closest). An outside corner gets an arc about the programmed corner when the moved ends lie 0.01
   or more apart along the profile's axis, else it is cut like an inside one; an arc before it ends
-  where its circle meets the circle about the corner through its scaled end (the crossing right
-  of the line from its centre to the corner in rs274's frame). A corner whose tangents turn by less than 1e-6 is no outside corner. Every arc a pass
-  cuts is held to a programmed arc's radius tolerance (the profile's own arcs are not held when it
-  is read). Two moved lines in line at a corner: "G7X error: Cannot intersect parallel lines".
+  where its circle meets the circle about the corner through its scaled end (the crossing right of
+  the line from its centre to the corner in rs274's frame). A corner whose tangents turn by less
+  than 1e-6 is no outside corner. Every arc a pass cuts is held to a programmed arc's radius
+  tolerance (the profile's own arcs are not held when it is read). Two moved lines in line at a
+  corner: "G7X error: Cannot intersect parallel lines".
 * Each pass: a traverse to ``I``, a traverse to the moved profile's first point, then G1/G2/G3
   feeds along it.  The tool is left at the last pass's end (the profile's end moved E); there is
   no move back.

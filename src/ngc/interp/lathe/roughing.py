@@ -65,6 +65,10 @@ class _Frame:
         return (b, a) if self.swap else (a, b)
 
 
+# two crossings of a level with an arc this close are one: the level touches it
+_ONE = 1e-6
+
+
 def _level_hits(seg: Seg, fr: _Frame, level: float) -> list[float]:
     """The ``b`` coordinates where ``seg`` meets the line a = level."""
     a0, b0 = fr.ab(seg.x0, seg.z0)
@@ -82,6 +86,8 @@ def _level_hits(seg: Seg, fr: _Frame, level: float) -> list[float]:
     for pa, pb in line_circle(level, -1.0, level, 1.0, ca, cb, r):
         if _on_arc(seg, fr, pa, pb):
             out.append(pb)
+    if len(out) == 2 and abs(out[1] - out[0]) <= _ONE:
+        return [(out[0] + out[1]) / 2]  # (the level touches the arc inside it: one point)
     return out
 
 
