@@ -14,10 +14,11 @@ import pytest
 
 from ngc import cli
 from ngc.errors import NgcError
+from ngc.planner.geometry import blend_arc
 from ngc.planner.lookahead import MAX_SECONDS
 from ngc.planner.machine import DEFAULT_MACHINE, AxisLimits, Machine
 from ngc.planner.moves import MAX_COORDINATE
-from ngc.planner.timing import time_text
+from ngc.planner.timing import time_file, time_text
 from ngc.planner.trajectory import DEFAULT_MAX_ROWS
 
 NINES = "9" * 160
@@ -231,3 +232,20 @@ def test_max_rows_needs_a_trajectory(capsys: pytest.CaptureFixture[str], tmp_pat
     code, out, err = run(capsys, "time", "--trajectory", "t.csv", "--max-rows", "0", path)
     assert (code, out) == (2, "")
     assert "argument --max-rows: needs a positive number, not '0'" in err
+
+
+# -- found by the soak ---------------------------------------------------------------------------
+def test_a_line_never_takes_less_than_no_time() -> None:
+    # a move after a parabolic blend ran alongside the move before for longer than it took
+    # itself (by 3e-19 s): its line's time came out negative
+    path = Path(__file__).resolve().parent / "timing" / "cases" / "19_engrave.ngc"
+    result = time_file(str(path))
+    assert min(seconds for _, seconds in result.by_line.items()) >= 0.0
+    assert all(seg_time >= 0.0 for seg_time in result.by_kind.values())
+
+
+@pytest.mark.parametrize("theta", [1e-9, 2e-9, 1e-8, 1e-6])
+def test_a_blend_for_a_turn_too_slight_for_its_cosine(theta: float) -> None:
+    # cos(θ/2) is 1.0 for θ below some 2e-8 rad: the tolerance's radius divided by zero
+    blend = blend_arc(theta, 10.0, 1.0, 0.01, 500.0, 866.0)
+    assert blend is not None and math.isfinite(blend.radius) and blend.radius > 0.0

@@ -176,8 +176,9 @@ def blend_arc(theta: float, goal: float, room: float, tolerance: float,
     if r * tan_half > room:
         r = room / tan_half
     if tolerance > 0.0:
-        cos_half = math.cos(half)
-        r_tol = tolerance * cos_half / (1.0 - cos_half)
+        # 1 - cos(θ/2) written as 2·sin²(θ/4): a turn of a few 1e-9 rad leaves cos(θ/2) at 1.0
+        sin_quarter = math.sin(0.5 * half)
+        r_tol = tolerance * math.cos(half) / (2.0 * sin_quarter * sin_quarter)
         if r_tol < r:
             r = r_tol
     if r <= EPS:

@@ -474,7 +474,9 @@ class Planner:
         seg.vout = vout
         seg.peak = peak
         seg.time = t
-        overlap = self.overlap
+        # the start that runs alongside the move before: no longer than this move itself (the
+        # overlap is worked out from the moves' lengths, not from this time)
+        overlap = self.overlap if self.overlap < t else t
         seg.t0 = self.clock + self.group - overlap
         seg.overlap = overlap  # the start of this move that runs alongside the one before
         self.group += t - overlap
