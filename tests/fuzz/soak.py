@@ -4,6 +4,7 @@
     python tests/fuzz/soak.py --api 1000000 --cli 10000 --seed 1 --jobs 2
     python tests/fuzz/soak.py --replay tests/fuzz/found/soak-1-api-17.ngc [--decoding utf-8]
     python tests/fuzz/soak.py --shrink tests/fuzz/found/soak-1-api-17.ngc
+    python tests/fuzz/soak.py --api 0 --time 20000 --time-cli 1000 --seed 1 --jobs 2
 
 Inputs come from tests/fuzz/hostile.py (random bytes, token soup, mutated golden programs); input
 ``i`` of a seed is always the same program.  API inputs run in worker processes, each on a fresh
@@ -16,6 +17,15 @@ code, a traceback on stderr, JSON output that is not strict JSON in valid UTF-8 
 the time limit; a worker over the RSS limit; a file left behind where none may be written.
 Every failing input is saved to ``--out`` (up to ``--keep`` per class) with a text file that says
 what happened and how to replay it.  Exit status 1 if anything failed.
+
+``--time N`` and ``--time-cli N`` soak ``ngc time`` (tests/fuzz/timed.py): each input is a random
+legal machine (a TOML file, an INI file or both, values at the ends of their ranges, axes left
+out, every blending setting) and a program (the inputs above, unmutated golden programs and the
+timing cases), timed in a worker through the API with a trajectory, or run as ``python -m ngc
+time`` with the machine files, ``--format json`` and ``--trajectory`` picked at random.  Beside
+the checks above: every time finite and non-negative, the parts adding up to the total within
+the documented rounding, trajectory rows finite with ``t`` non-decreasing, reports without NaN,
+no trajectory file left by a failed run.
 """
 
 from __future__ import annotations
@@ -50,11 +60,14 @@ for _p in (str(REPO / "src"), str(HERE)):
         sys.path.insert(0, _p)
 
 import hostile  # noqa: E402
+import timed  # noqa: E402
 
 from ngc.errors import NgcError  # noqa: E402
 
 DEFAULT_OUT = HERE / "found"
 API_CHUNK = 250  # API inputs per task sent to a worker
+TIME_CHUNK = 50  # ngc time inputs per task (each takes longer)
+TIME_SOURCES = ("time", "time-cli")
 GRACE_S = 10.0  # a worker this long past its own time limit is stuck (in C code) and is killed
 CLI_TIMEOUT_S = 10.0  # a command line run is killed after this (over --time-limit is a failure)
 OUTPUT_LIMIT = 64 << 20  # ... or after this many bytes of output
@@ -78,6 +91,7 @@ class Config:
     mem_limit_mb: int
     keep: int
     corpus: list[bytes] = field(default_factory=hostile.golden_corpus)
+    timing: list[bytes] = field(default_factory=timed.timing_corpus)
     cli_variants: list[CliVariant] = field(default_factory=list)
     python: list[str] = field(default_factory=lambda: [sys.executable])
 
@@ -127,6 +141,9 @@ class TaskResult:
 def make_input(cfg: Config, source: str, index: int) -> tuple[random.Random, str, bytes]:
     """Input ``index`` of a seed: its random source (for the run's choices too), kind, bytes."""
     rng = random.Random(f"{cfg.seed}/{source}/{index}")
+    if source in TIME_SOURCES:
+        kind, data = timed.program(rng, cfg.corpus, cfg.timing)
+        return rng, kind, data
     weighted = [k for k in cfg.kinds for _ in range(KIND_WEIGHTS[k])]
     kind = rng.choice(weighted)
     return rng, kind, hostile.generate(kind, rng, cfg.corpus)
@@ -183,6 +200,67 @@ def api_input(cfg: Config, index: int, result: TaskResult, rss_flagged: list[boo
         add_failure(result, cfg, Failure("api", index, kind, f"api RSS over {cfg.rss_limit_mb:g} MB",
                                          f"the worker's peak RSS reached {rss_mb:.1f} MB with this "
                                          f"input ({klass or outcome})", data, seconds, how))
+
+
+def time_input(cfg: Config, index: int, result: TaskResult, rss_flagged: list[bool],
+               base: Path) -> None:
+    """One ``ngc time`` input through the API: a machine (files in a folder of its own, not in
+    the working directory the program might write to) and a program."""
+    rng, kind, data = make_input(cfg, "time", index)
+    folder = base / f"time-{index}"
+    folder.mkdir()
+    try:
+        files = timed.machine_files(rng, folder)
+        configs = {path.name: path.read_bytes() for path in files.values()}
+        outcome, seconds, klass, detail = time_api_run(data, files, rng, cfg)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+    how = {"configs": configs}
+    result.counts[f"time {kind} {outcome}"] += 1
+    if seconds > result.slowest[0]:
+        result.slowest = (seconds, f"time {index}")
+    if klass:
+        add_failure(result, cfg, Failure("time", index, kind, f"time {klass}", detail, data,
+                                         seconds, how))
+    rss_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    if rss_mb > cfg.rss_limit_mb and not rss_flagged[0]:
+        rss_flagged[0] = True
+        add_failure(result, cfg, Failure("time", index, kind,
+                                         f"time RSS over {cfg.rss_limit_mb:g} MB",
+                                         f"the worker's peak RSS reached {rss_mb:.1f} MB with "
+                                         f"this input ({klass or outcome})", data, seconds, how))
+
+
+def time_api_run(data: bytes, files: dict[str, Path], rng: random.Random, cfg: Config
+                 ) -> tuple[str, float, str, str]:
+    """(outcome, seconds, failure class or "", detail) of one program timed through the API."""
+    text = hostile.decode(data, "utf-8")
+    start = time.perf_counter()
+    klass = detail = ""
+    outcome = "ok"
+    try:
+        with hostile.time_limit(cfg.time_limit):
+            outcome = timed.run_api(text, files, rng, cfg.max_iterations)
+    except NgcError as exc:
+        outcome, detail = "NgcError", exc.render()
+    except timed.TimeCheckError as exc:
+        klass, detail = f"check: {str(exc).split(':')[0]}", str(exc)
+    except hostile.Overtime:
+        klass = f"over {cfg.time_limit:g} s"
+    except Exception as exc:
+        klass, detail = hostile.failure_class(exc), traceback.format_exc()
+    seconds = time.perf_counter() - start
+    left = os.listdir()
+    if left:
+        for name in left:
+            if os.path.isdir(name):
+                shutil.rmtree(name, ignore_errors=True)
+            else:
+                with contextlib.suppress(OSError):
+                    os.unlink(name)
+        klass = klass or "wrote files"
+        detail += f"\nfiles left in the working directory: {sorted(left)}"
+    return ("fail" if klass else outcome), seconds, klass, detail
 
 
 def add_failure(result: TaskResult, cfg: Config, failure: Failure) -> None:
@@ -371,6 +449,46 @@ def cli_input(cfg: Config, index: int, result: TaskResult, base: Path) -> None:
                                          f"stderr (tail):\n{tail}", data, seconds, how))
 
 
+def time_cli_input(cfg: Config, index: int, result: TaskResult, base: Path) -> None:
+    """One ``python -m ngc time`` run on a random machine and program."""
+    rng, kind, data = make_input(cfg, "time-cli", index)
+    work, home = base / f"tcli-{index}", base / f"home-{index}"
+    out, err = base / "stdout", base / "stderr"
+    work.mkdir()
+    home.mkdir()
+    try:
+        files = timed.machine_files(rng, work)
+        configs = {path.name: path.read_bytes() for path in files.values()}
+        budget = rng.choice((1, 10, 1000)) if rng.random() < 0.3 else hostile.MAX_ITERATIONS
+        args, fmt_json, trajectory = timed.cli_arguments(rng, files, budget)
+        argv = [*args, "prog.ngc"]
+        (work / "prog.ngc").write_bytes(data)
+        env = cli_env(rng, home)
+        start = time.perf_counter()
+        rc = run_bounded([*cfg.python, "-m", "ngc", *argv], work, env, None, out, err)
+        seconds = time.perf_counter() - start
+        errors = read_bounded(err)
+        klass = cli_verdict(cfg, "time", "json" if fmt_json else "text", rc, out, errors,
+                            seconds, [p.name for p in work.iterdir()])
+        if not klass and rc not in (KILLED_TIME, KILLED_OUTPUT):
+            klass = timed.cli_verdict(rc, read_bounded(out, 64 << 20), errors, work,
+                                      fmt_json, trajectory)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+        shutil.rmtree(home, ignore_errors=True)
+    label = f"time-cli{' json' if fmt_json else ''}"
+    result.counts[f"{label} {'fail' if klass else f'exit {rc}'}"] += 1
+    if seconds > result.slowest[0]:
+        result.slowest = (seconds, f"time-cli {index}")
+    if klass:
+        tail = errors.decode("utf-8", "backslashreplace")[-3000:]
+        how = {"argv": ["python", "-m", "ngc", *argv], "stdin": False,
+               "env": {k: env[k] for k in ("LC_ALL", "PYTHONIOENCODING") if k in env},
+               "exit": rc, "configs": configs}
+        add_failure(result, cfg, Failure("time-cli", index, kind, f"{label}: {klass}",
+                                         f"stderr (tail):\n{tail}", data, seconds, how))
+
+
 def cli_verdict(cfg: Config, command: str, fmt: str, rc: int, out: Path, err: bytes,
                 seconds: float, extra: list[str]) -> str:
     """The failure class of one command-line run, "" if it passed."""
@@ -420,6 +538,10 @@ def worker_main(conn: Connection, status: Any, cfg: Config) -> None:
                 status[0], status[1] = index, time.monotonic()
                 if task.source == "api":
                     api_input(cfg, index, result, rss_flagged)
+                elif task.source == "time":
+                    time_input(cfg, index, result, rss_flagged, base)
+                elif task.source == "time-cli":
+                    time_cli_input(cfg, index, result, base)
                 else:
                     cli_input(cfg, index, result, base)
             status[0] = -1
@@ -490,7 +612,8 @@ def run_campaign(cfg: Config, tasks: list[Task], jobs: int, progress: bool) -> T
     totals = Totals()
     pending = deque(tasks)
     workers = [start_worker(ctx, cfg) for _ in range(max(1, jobs))]
-    total = Counter({s: sum(t.stop - t.start for t in tasks if t.source == s) for s in ("api", "cli")})
+    total = Counter({s: sum(t.stop - t.start for t in tasks if t.source == s)
+                     for s in ("api", "cli", *TIME_SOURCES)})
     started, shown = time.monotonic(), 0.0
     try:
         while pending or any(w.task for w in workers):
@@ -505,7 +628,7 @@ def run_campaign(cfg: Config, tasks: list[Task], jobs: int, progress: bool) -> T
                     if w.conn in ready:
                         workers[i] = collect(ctx, cfg, w, totals, pending)
                     continue
-                limit = cfg.time_limit if w.task.source == "api" else CLI_TIMEOUT_S
+                limit = cfg.time_limit if w.task.source in ("api", "time") else CLI_TIMEOUT_S
                 if w.status[0] >= 0 and time.monotonic() - w.status[1] > limit + GRACE_S:
                     w.process.kill()
                     w.process.join()
@@ -559,8 +682,9 @@ def requeue(ctx: Any, cfg: Config, w: Worker, totals: Totals, pending: deque[Tas
 def show_progress(totals: Totals, total: Counter[str], elapsed: float) -> None:
     fails = sum(n for k, n in totals.counts.items() if k.startswith("failure "))
     rate = totals.done["api"] / max(elapsed, 1e-9)
+    timing = "".join(f"  {s} {totals.done[s]}/{total[s]}" for s in TIME_SOURCES if total[s])
     print(f"\r  api {totals.done['api']}/{total['api']}  cli {totals.done['cli']}/{total['cli']}"
-          f"  failures {fails}  {rate:.0f} API inputs/s  {elapsed:.0f}s ", end="", file=sys.stderr,
+          f"{timing}  failures {fails}  {rate:.0f} API inputs/s  {elapsed:.0f}s ", end="", file=sys.stderr,
           flush=True)
 
 
@@ -588,7 +712,8 @@ def save_failure(out: Path, cfg: Config, f: Failure) -> Path:
             lines.append(f"command: {' '.join(f.how['argv'])}"
                          f"{' < program' if f.how.get('stdin') else ''}")
             lines.append(f"environment: {f.how.get('env')}; exit {f.how.get('exit')}")
-        lines.append(f"rerun: python tests/fuzz/soak.py --seed {cfg.seed} --api 0 --cli 1 "
+        flag = {"time": "--time", "time-cli": "--time-cli"}.get(f.source, "--cli")
+        lines.append(f"rerun: python tests/fuzz/soak.py --seed {cfg.seed} --api 0 {flag} 1 "
                      f"--start {f.index} --out <dir>")
     lines += ["", f.detail]
     (out / f"{stem}.txt").write_text("\n".join(lines) + "\n", encoding="utf-8",
@@ -599,7 +724,9 @@ def save_failure(out: Path, cfg: Config, f: Failure) -> Path:
 def summarize(cfg: Config, totals: Totals, elapsed: float, out: Path) -> int:
     api_n, cli_n = totals.done["api"], totals.done["cli"]
     rate = f"; API inputs run at {api_n / totals.api_seconds:.0f}/s per worker" if api_n else ""
-    print(f"soak: seed {cfg.seed}, {api_n} API inputs, {cli_n} CLI runs in {elapsed:.1f} s{rate}")
+    timing = "".join(f", {totals.done[s]} {s} inputs" for s in TIME_SOURCES if totals.done[s])
+    print(f"soak: seed {cfg.seed}, {api_n} API inputs, {cli_n} CLI runs{timing} in "
+          f"{elapsed:.1f} s{rate}")
     print("outcomes:")
     for key, n in sorted(totals.counts.items()):
         if not key.startswith("failure "):
@@ -702,6 +829,10 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--api", type=int, default=10000, help="API inputs (default 10000)")
     ap.add_argument("--cli", type=int, default=0, help="CLI runs (default 0)")
+    ap.add_argument("--time", type=int, default=0,
+                    help="ngc time inputs through the API, on random machines (default 0)")
+    ap.add_argument("--time-cli", type=int, default=0,
+                    help="ngc time runs on the command line, on random machines (default 0)")
     ap.add_argument("--seed", type=int, default=1, help="seed (default 1)")
     ap.add_argument("--start", type=int, default=0,
                     help="number of the first input (default 0): --api 1 --start 17 runs input 17")
@@ -763,7 +894,11 @@ def main(argv: list[str] | None = None) -> int:
     first, api_end, cli_end = opts.start, opts.start + opts.api, opts.start + opts.cli
     api_tasks = [Task("api", i, min(i + API_CHUNK, api_end)) for i in range(first, api_end, API_CHUNK)]
     cli_tasks = [Task("cli", i, i + 1) for i in range(first, cli_end)]
-    tasks = interleave(api_tasks, cli_tasks)
+    time_end = opts.start + opts.time
+    time_tasks = [Task("time", i, min(i + TIME_CHUNK, time_end))
+                  for i in range(first, time_end, TIME_CHUNK)]
+    time_cli_tasks = [Task("time-cli", i, i + 1) for i in range(first, first + opts.time_cli)]
+    tasks = interleave(interleave(api_tasks, cli_tasks), interleave(time_tasks, time_cli_tasks))
     progress = sys.stderr.isatty() and not opts.quiet
     start = time.monotonic()
     try:
