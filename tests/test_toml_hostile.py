@@ -39,7 +39,7 @@ DEEP = "a = " + "[" * 5000 + "]" * 5000 + "\n"
     ("servo_period = 1" + "0" * 400 + "\n", "an integer outside TOML's 64-bit range"),
     ("[start]\nX = -1" + "0" * 30 + "\n", "an integer outside TOML's 64-bit range"),
     ("servo_period = 1" + "0" * 5000 + "\n", "an integer of thousands of digits"),
-])
+], ids=["arrays", "tables", "byte 0x80", "byte 0xff", "401 digits", "31 digits", "5001 digits"])
 @pytest.mark.parametrize("option", ["--machine", "--probe", "--setup"])
 def test_a_toml_file_no_reader_takes_is_a_clean_error(
         capsys: pytest.CaptureFixture[str], tmp_path: Path, text: str | bytes, problem: str,
