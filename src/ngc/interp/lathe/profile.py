@@ -16,6 +16,7 @@ CCW = 3  # G3
 NOT_MONOTONIC = "G7X error: Not monotonic"
 PARALLEL = "G7X error: Cannot intersect parallel lines"
 _EPS = 1e-9
+_NEAR_END = 1e-3
 
 
 class Seg(NamedTuple):
@@ -47,10 +48,15 @@ def steps(seg: Seg, axis: int) -> tuple[float, bool]:
     v0, v1 = (seg.x0, seg.x1) if axis == 0 else (seg.z0, seg.z1)
     if seg.kind == LINE:
         return v1 - v0, True
-    # the arc's extremes on the axis lie where its radius is parallel to the axis
+    # the arc's extremes on the axis lie where its radius is parallel to the axis; one within
+    # 0.001 of the arc's start or end turns nothing back (rs274: whatever the arc's radius)
+    r = math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz)
     for extreme in (0.0, math.pi) if axis == 1 else (math.pi / 2, -math.pi / 2):
         if within(seg, extreme):
-            return v1 - v0, False
+            px, pz = seg.cx + r * math.sin(extreme), seg.cz + r * math.cos(extreme)
+            if (math.hypot(px - seg.x0, pz - seg.z0) > _NEAR_END
+                    and math.hypot(px - seg.x1, pz - seg.z1) > _NEAR_END):
+                return v1 - v0, False
     return v1 - v0, True
 
 
