@@ -181,6 +181,17 @@ def _own_end_radius(arc: Seg, side: float, d: float) -> float:
     return math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz) * (r_start - toward_centre * d) / r_start
 
 
+def _carrier_radius(prev: Seg, prev_moved: Seg, move: Seg, side: float, d: float) -> float:
+    """The radius of the circle an arc meets a line on (see ``_crossing``): a line into an arc
+    (``move`` as programmed), its scaled end's; an arc (``prev``, moved whole as ``prev_moved``)
+    into a line, its moved end's; 0 for two lines or two arcs."""
+    if prev.kind == LINE and move.kind != LINE:
+        return _own_end_radius(move, side, d)
+    if prev.kind != LINE and move.kind == LINE:
+        return math.hypot(prev_moved.x1 - prev.cx, prev_moved.z1 - prev.cz)
+    return 0.0
+
+
 def _arc_end_at_corner(arc: Seg, corner: Seg, mirror: float) -> tuple[float, float]:
     """Where a moved arc ends at an outside corner, as rs274 finds it: where its circle, of its
     moved start's radius, meets the circle about the programmed corner through its moved end
@@ -247,6 +258,18 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
         if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS and not roughing:
             raise NgcSemanticError(PARALLEL)
         if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
+            was = moves[i - 1]
+            if (roughing and prev.kind == LINE and len(out) > 1 and (prev.x1 - prev.x0)
+                    * (was.x1 - was.x0) + (prev.z1 - prev.z0) * (was.z1 - was.z0) < 0):
+                # (a line turned round, as below, whose end meets the next move as it is)
+                corners.discard(len(out) - 1)
+                out.pop()
+                prev = out[-1]
+                r_arc = _carrier_radius(prev, shifted[i - 2], moves[i], side, d)
+                px, pz = _crossing(prev, seg, mirror, r_arc)
+                out[-1] = prev._replace(x1=px, z1=pz)
+                out.append(seg._replace(x0=px, z0=pz))
+                continue
             out.append(seg)
             continue
         corner = moves[i]
@@ -266,14 +289,11 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
         if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS:
             out.append(seg)  # (slanted lines in line, joined as G71/G72 join them)
             continue
-        r_arc = 0.0
-        if prev.kind == LINE and seg.kind != LINE:
-            r_arc = _own_end_radius(moves[i], side, d)
-        elif prev.kind != LINE and seg.kind == LINE:
-            r_arc = math.hypot(shifted[i - 1].x1 - prev.cx, shifted[i - 1].z1 - prev.cz)
+        r_arc = _carrier_radius(prev, shifted[i - 1], moves[i], side, d)
         px, pz = _crossing(prev, seg, mirror, r_arc)
+        was = moves[i - 1]  # (the line as programmed: which way it goes)
         if (roughing and prev.kind == LINE and len(out) > 1
-                and (px - prev.x0) * (prev.x1 - prev.x0) + (pz - prev.z0) * (prev.z1 - prev.z0) < 0):
+                and (px - prev.x0) * (was.x1 - was.x0) + (pz - prev.z0) * (was.z1 - was.z0) < 0):
             # a line shorter than the distance turns round between its corners: G71/G72 leave
             # it out, the lines on either side meeting where their carriers cross
             corners.discard(len(out) - 1)
