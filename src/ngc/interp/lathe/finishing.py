@@ -64,8 +64,9 @@ _TIE = 1e-9
 TANGENT = 1e-6
 
 
-# a step smaller than this is none (the last digits an incremental move leaves)
-_NO_STEP = 1e-12
+# a step no longer than this along the axis turns nothing back, nor sets the way (rs274: in the
+# program's units, 0.001 goes, 0.0010000000000000009 does not; as G71's profile check)
+_NO_STEP = 1e-3
 
 
 def _monotonic(moves: list[Seg], axis: int, way: float) -> bool:
@@ -305,12 +306,28 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
     return out, corners
 
 
+def _without_nowhere(profile: Profile) -> Profile:
+    """``profile`` without its lines that go nowhere; the move after one starts where the last
+    move kept ended, and keeps that point's zeros on the axes it does not move (a ``Z-0`` that
+    goes nowhere leaves no -0 behind, as rs274 shows)."""
+    kept: Profile = []
+    for seg in profile:
+        if seg.kind == LINE and (seg.x0, seg.z0) == (seg.x1, seg.z1):
+            continue
+        if kept:
+            px, pz = kept[-1].x1, kept[-1].z1
+            seg = seg._replace(x0=px, z0=pz, x1=px if seg.x1 == px else seg.x1,
+                               z1=pz if seg.z1 == pz else seg.z1)
+        kept.append(seg)
+    return kept
+
+
 def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: float,
         p: float) -> None:
     """The passes of G70 Q- D- E- P- over ``profile`` (its first segment from ``start``); the
     traverse to ``start`` is the caller's."""
     # moves that go nowhere are left out (the approach too, when the start is the first point)
-    profile = [seg for seg in profile if (seg.x0, seg.z0) != (seg.x1, seg.z1) or seg.kind != LINE]
+    profile = _without_nowhere(profile)
     if not profile:
         return
     passes = int(p)
