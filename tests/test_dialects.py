@@ -192,7 +192,7 @@ def test_canon_passes_the_setup(capsys: pytest.CaptureFixture[str], work: Path,
     assert len(seen.setups) == 1
     assert_is_the_sheet(seen.setups[0])
     run(capsys, "canon", "--dialect", "engine", "e.ngc")
-    assert seen.setups[1:] == []  # no sheet: the default machine
+    assert seen.setups[1:] == [None]  # no sheet: the default machine
 
 
 # -- ngc check -------------------------------------------------------------------------------------

@@ -227,9 +227,9 @@ def _machine_options() -> argparse.ArgumentParser:
                        "default: rs274's probe, which never trips")
     group.add_argument("--max-iterations", metavar="N", type=_positive,
                        default=DEFAULT_MAX_ITERATIONS,
-                       help="the work budget: loop iterations and subroutine calls a run may make "
-                       "before it stops with an error "
-                       f"(default {DEFAULT_MAX_ITERATIONS})")
+                       help="the work budget: loop iterations, subroutine calls, cycle passes "
+                       "and (engine dialect) segments a run may make before it stops with an "
+                       f"error (default {DEFAULT_MAX_ITERATIONS})")
     return parent
 
 
@@ -387,7 +387,7 @@ def _canon_engine(options: argparse.Namespace, program: Program) -> int:
     text = dialects.read_text(program.handle)
     try:
         dialects.interpret_engine(text, SINKS[options.format](sys.stdout), setup=setup,
-                                  file=program.name)
+                                  file=program.name, max_iterations=options.max_iterations)
     except NgcError as exc:
         sys.stdout.flush()
         sys.stderr.write(exc.render() + "\n")
@@ -474,7 +474,8 @@ def run_check(options: argparse.Namespace) -> int:
             code = EXIT_USAGE
             continue
         if program.dialect == ENGINE:
-            error, paragraph = _check_engine(program, engine_setup, json_lines)
+            error, paragraph = _check_engine(program, engine_setup, json_lines,
+                                             options.max_iterations)
         else:
             handle = text_reader(program.handle)
             with handle, _progress(program.name, handle, output_to_terminal=False) as progress:
@@ -491,15 +492,15 @@ def run_check(options: argparse.Namespace) -> int:
     return code
 
 
-def _check_engine(program: Program, setup: EngineSetup | None,
-                  json_lines: bool) -> tuple[NgcError | None, str]:
+def _check_engine(program: Program, setup: EngineSetup | None, json_lines: bool,
+                  max_iterations: int) -> tuple[NgcError | None, str]:
     """``ngc check`` on an engine-dialect program: its first error and its report."""
     from . import engine_report
 
     assert program.handle is not None
     with program.handle:
         text = dialects.read_text(program.handle)
-    result = engine_report.check_text(text, program.name, setup)
+    result = engine_report.check_text(text, program.name, setup, max_iterations)
     return result.error, (dumps(engine_report.record(result)) if json_lines
                           else engine_report.render(result))
 

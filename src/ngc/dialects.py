@@ -25,6 +25,7 @@ import stat
 from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any, BinaryIO
 
+from .budget import DEFAULT_MAX_ITERATIONS
 from .interp.source import BOM, LINE_BYTES
 
 if TYPE_CHECKING:
@@ -204,24 +205,26 @@ def engine_text(op: object) -> str:
     return output.as_text(op)
 
 
-def engine_ops(text: str, setup: EngineSetup | None = None,
-               file: str | None = None) -> Iterable[EngineOp]:
+def engine_ops(text: str, setup: EngineSetup | None = None, file: str | None = None,
+               max_iterations: int = DEFAULT_MAX_ITERATIONS) -> Iterable[EngineOp]:
     """The operations of an engine-dialect program, on the machine ``setup`` describes (None:
-    the default machine)."""
+    the default machine), within the work budget ``max_iterations`` (segments and pecks)."""
     from . import engine
 
-    machine = None if setup is None else engine.Engine(setup=setup)
+    machine = (engine.Engine(max_iterations=max_iterations) if setup is None
+               else engine.Engine(setup=setup, max_iterations=max_iterations))
     return engine.run(text.removeprefix("\ufeff"), machine, file=file)
 
 
 def interpret_engine(text: str, sink: Any, *, setup: EngineSetup | None = None,
-                     file: str | None = None) -> None:
+                     file: str | None = None,
+                     max_iterations: int = DEFAULT_MAX_ITERATIONS) -> None:
     """Send each engine operation to ``sink.emit(op, label, line)`` (``label``: the operation's
     name, as in its JSON ``"op"``), then flush the sink (also after an error)."""
     from .engine import output
 
     try:
-        for op in engine_ops(text, setup, file):
+        for op in engine_ops(text, setup, file, max_iterations):
             sink.emit(op, output.name(op), op.line)
     finally:
         sink.flush()

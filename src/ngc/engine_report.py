@@ -26,6 +26,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from .budget import DEFAULT_MAX_ITERATIONS
 from .errors import NgcError
 
 if TYPE_CHECKING:
@@ -189,9 +190,11 @@ def summarize(ops: Iterable[Op]) -> EngineSummary:
     return summarizer.summary()
 
 
-def check_text(text: str, name: str, setup: Setup | None = None) -> EngineCheckResult:
+def check_text(text: str, name: str, setup: Setup | None = None,
+               max_iterations: int = DEFAULT_MAX_ITERATIONS) -> EngineCheckResult:
     """Run an engine-dialect program given as text, keeping only a summary of its motion;
-    ``name`` is the file name errors carry.  The first error is returned, not raised.
+    ``name`` is the file name errors carry; ``max_iterations`` the work budget (segments and
+    pecks).  The first error is returned, not raised.
 
     >>> result = check_text("F10\\nfeed X3\\nfrobnicate\\n", "p.ngc")
     >>> result.lines, round(result.summary.length, 9), result.error.line
@@ -202,7 +205,7 @@ def check_text(text: str, name: str, setup: Setup | None = None) -> EngineCheckR
     summarizer = EngineSummarizer()
     error: NgcError | None = None
     try:
-        for op in engine_ops(text, setup, file=name):
+        for op in engine_ops(text, setup, name, max_iterations):
             summarizer.add(op)
     except NgcError as exc:
         error = exc

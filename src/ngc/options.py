@@ -18,8 +18,8 @@
     a simulated probe input for G38.2-G38.5 (:mod:`ngc.config.probe`: the solids the probe
     touches).  ``canon`` and ``check`` only: ``rs274``'s probe never trips, as rs274's does.
 ``--max-iterations N``
-    the work budget: loop iterations and subroutine calls a run may make before it stops with
-    an error (a runaway program).
+    the work budget: loop iterations, subroutine calls, cycle passes and (engine dialect)
+    segments a run may make before it stops with an error (a runaway program).
 
 ``rs274`` reports its inputs the way rs274 does; ``canon`` and ``check`` load them strictly with
 :func:`load_setup`: a file given to ``-i``, ``-t`` or ``-v`` must be a regular file they can open

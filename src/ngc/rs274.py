@@ -83,8 +83,9 @@ Options (rs274's own; options may also follow the file names):
 
 Options of ngc:
     --max-iterations N
-              the work budget of a run: loop iterations and subroutine calls it may make
-              before it stops with an error (a runaway program); default {DEFAULT_MAX_ITERATIONS}
+              the work budget of a run: loop iterations, subroutine calls, cycle passes
+              and (engine dialect) segments it may make before it stops with an error (a
+              runaway program); default {DEFAULT_MAX_ITERATIONS}
     --dialect linuxcnc|engine
               the program's dialect: linuxcnc (rs274's, the default) or engine (seed 003's
               codes by name; prints its operations as ngc canon does, errors as file:line:col);
@@ -330,7 +331,8 @@ def _run_engine(o: Rs274Options, out: TextIO, err: TextIO) -> int:
         err.write(f"could not open output file {_as_read(o.output or '')}\n")
         return 1
     try:
-        interpret_engine(text, TextSink(target), setup=setup, file=name)
+        interpret_engine(text, TextSink(target), setup=setup, file=name,
+                         max_iterations=o.max_iterations)
     except NgcError as exc:
         err.write(exc.render() + "\n")
         return 1

@@ -50,7 +50,8 @@ def length(axes: list[Cubic]) -> float:
     """The length of the path the axes draw together over the piece."""
     total = 0.0
     for t, w in _GL:
-        total += w * math.sqrt(sum(slope(c, t) ** 2 for c in axes))
+        # (s * s, not s ** 2: a slope past 1e154 squares to infinity instead of raising)
+        total += w * math.sqrt(sum(s * s for s in (slope(c, t) for c in axes)))
     return total
 
 

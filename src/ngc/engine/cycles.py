@@ -121,6 +121,7 @@ def _pecks(eng: Engine, line: int, code: int, at: Callable[[float], list[float]]
     R, back down at rapid to the clearance above the last depth, again.  Then out to R."""
     depth = r
     while depth > bottom:
+        eng.work()  # (Q sets how many pecks there are)
         if code == 83 and depth < r:
             yield from straight(eng, line, at(depth + PECK_CLEARANCE), "rapid")
         depth = max(bottom, depth - peck)

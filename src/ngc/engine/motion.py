@@ -104,6 +104,9 @@ def arc_count(sweep: float, radius: float) -> int:
     """Segments for an arc of ``sweep`` degrees and ``radius`` program units: at most 90 degrees
     each; over a radius of 1 the radius times the angle decides (the seed)."""
     size = abs(sweep) * max(1.0, abs(radius))
+    if not math.isfinite(size):  # (a product of two large numbers)
+        raise EngineError(f"An arc of {sweep:g} degrees at radius {radius:g} needs more segments "
+                          "than can be counted")
     return max(1, math.ceil(size / 90.0 - 1e-9))
 
 
@@ -224,50 +227,54 @@ def segments(eng: Engine, line: int, made: list[Clause], motion: str, pin_all: b
     if not made:
         return
     count = max(c.segments for c in made)
+    eng.work(count)  # (all of them or none: the line fails before its first segment)
     start = list(eng.pos)
-    pieces: list[dict[int, list[float]]] = []
+    pins = _pins(made, pin_all)
+    # the segments are made one at a time as they are taken: a move of millions of them holds
+    # one at a time
     for j in range(count):
-        t0, t1 = j / count, (j + 1) / count
-        total: dict[int, list[float]] = {}
-        for c in made:
-            for k, cub in c.piece(t0, t1).items():
-                acc = total.setdefault(k, [0.0, 0.0, 0.0, 0.0])
-                for i in range(4):
-                    acc[i] += cub[i]
-        pieces.append(total)
-    _pin(made, pieces, start, pin_all)
-    named = set(pieces[0])
-    stopped = named & set(eng.running)
-    if stopped:
-        for k in stopped:
-            del eng.running[k]
-        yield run_change(eng, line)
-    for total in pieces:
+        total = _summed(made, j / count, (j + 1) / count)
+        if j == count - 1:
+            for k, e in pins.items():
+                if k in total:
+                    total[k][3] = e - start[k]
+        if j == 0:
+            stopped = set(total) & set(eng.running)
+            if stopped:
+                for k in stopped:
+                    del eng.running[k]
+                yield run_change(eng, line)
         mm = {k: (start[k] + c[0], start[k] + c[1], start[k] + c[2], start[k] + c[3])
               for k, c in sorted(total.items())}
         yield from timed(eng, line, mm, duration(eng, motion, mm), motion)
-    for k, acc in pieces[-1].items():
+    for k, acc in total.items():
         eng.pos[k] = start[k] + acc[3]
     if eng.exact:
         yield Stop(line)
 
 
-def _pin(made: list[Clause], pieces: list[dict[int, list[float]]], start: list[float],
-         pin_all: bool) -> None:
-    """An axis that one clause alone moves ends exactly where that clause says it ends."""
-    last = pieces[-1]
+def _summed(made: list[Clause], t0: float, t1: float) -> dict[int, list[float]]:
+    """The clauses' pieces over [t0, t1], added per axis."""
+    total: dict[int, list[float]] = {}
+    for c in made:
+        for k, cub in c.piece(t0, t1).items():
+            acc = total.setdefault(k, [0.0, 0.0, 0.0, 0.0])
+            for i in range(4):
+                acc[i] += cub[i]
+    return total
+
+
+def _pins(made: list[Clause], pin_all: bool) -> dict[int, float]:
+    """Where the last segment ends exactly (machine positions), per axis: an axis that one
+    clause alone moves ends where that clause says it ends; with ``pin_all``, every axis the
+    last clause knows the end of."""
     if pin_all:
-        for k, e in made[-1].ends.items():
-            if k in last:
-                last[k][3] = e - start[k]
-        return
+        return dict(made[-1].ends)
     movers: dict[int, list[Clause]] = {}
     for c in made:
         for k in c.piece(1.0, 1.0):
             movers.setdefault(k, []).append(c)
-    for k, cs in movers.items():
-        if len(cs) == 1 and k in cs[0].ends and k in last:
-            last[k][3] = cs[0].ends[k] - start[k]
+    return {k: cs[0].ends[k] for k, cs in movers.items() if len(cs) == 1 and k in cs[0].ends}
 
 
 def timed(eng: Engine, line: int, mm: dict[int, Cubic], seconds: float, motion: str

@@ -11,6 +11,7 @@ import math
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
+from ..budget import DEFAULT_MAX_ITERATIONS
 from ..errors import NgcRuntimeError, NgcSemanticError
 from .bezier import Cubic
 from .setup import Setup
@@ -162,6 +163,10 @@ class Engine:
     ended: bool = False  # M2, M30
     params: Params = field(default_factory=Params)
     setup: Setup = field(default_factory=Setup)
+    # The work budget of a run (``--max-iterations``): each engine segment and each drilling peck
+    # counts one, so a program whose numbers ask for billions of them ends with an error.
+    max_iterations: int = DEFAULT_MAX_ITERATIONS
+    iterations: int = 0
 
     def __post_init__(self) -> None:
         self.reset_transforms()
@@ -171,6 +176,14 @@ class Engine:
         self.vectors = {name: unit_vector(k) for k, name in enumerate(VECTORS)}
         self.along = dict.fromkeys(VECTORS, 0.0)
         self.polars = {p: Polar(*POLAR_DEFAULTS[p]) for p in POLARS}
+
+    def work(self, count: int = 1) -> None:
+        """``count`` more segments or pecks against the work budget; past it, an error."""
+        self.iterations += count
+        if self.iterations > self.max_iterations:
+            raise NgcRuntimeError(
+                f"Work limit reached: {self.max_iterations} segments and drilling pecks; the "
+                "program asks for more than that (raise the limit with --max-iterations)")
 
     # -- units and offsets ----------------------------------------------------------------------
     @property

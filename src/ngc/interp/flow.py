@@ -29,6 +29,8 @@ import os
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, NoReturn, Protocol
 
+# (re-exported for the callers that take it from here)
+from ..budget import DEFAULT_MAX_ITERATIONS as DEFAULT_MAX_ITERATIONS
 from ..errors import (
     NgcEndOfFile,
     NgcError,
@@ -80,8 +82,7 @@ MAX_CALL_DEPTH = 9
 # counts the program's numbers set (``Machine.work``: canned cycle repeats and pecks, G76 passes,
 # G70-G72 passes) count against it, so an endless ``o100 while [1]``, a subroutine that calls
 # itself many times per level or a G76 with a depth of 1e-5 ends with an error instead of running
-# (practically) forever.
-DEFAULT_MAX_ITERATIONS = 10_000_000
+# (practically) forever.  Its default (ngc/budget.py) is the engine dialect's too.
 ARGUMENT_PARAMETERS = 30
 _LOOPS = ("while", "do")
 

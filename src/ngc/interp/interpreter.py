@@ -61,8 +61,8 @@ class Interpreter:
         write_files: bool = True,
         probe: Probe | None = None,
     ) -> None:
-        """``max_iterations`` is the work budget of a run: loop iterations and subroutine calls
-        (a runaway program is an error);
+        """``max_iterations`` is the work budget of a run: loop iterations, subroutine calls and
+        the iterations of codes' loops (cycle passes, pecks; a runaway program is an error);
         ``max_call_depth`` the subroutine levels below the main program (rs274: 9); ``table`` is
         the dialect's code table; ``fast=False`` sends every line down the general path (the
         fast path gives the same results; see :mod:`.fastpath`); ``write_files=False`` keeps the
