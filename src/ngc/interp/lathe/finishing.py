@@ -5,9 +5,11 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
 
 * The handler's traverse to ``S`` comes first (X/Z words, else the current point).  Moves of the
   profile that go nowhere are left out (the first move too when S is F: the next move then is
-  the approach).  A profile of the approach alone gives no pass.
-* The profile goes *along Z* when it is monotonic in Z (arcs by their extent), the way set by the
-  moves after the first: +Z if one of them rises, else -Z (so a profile rising only in its first
+  the approach; the move after one keeps the zeros of where the last move kept ended).  A
+  profile of the approach alone gives no pass.
+* The profile goes *along Z* when it is monotonic in Z (arcs by their extent; a step of 0.001
+  or less counts for nothing), the way set by the moves after the first: +Z if one of them
+  rises, else -Z (so a profile rising only in its first
   move, or of one rising move, is not along Z).  Otherwise it goes *along X* if monotonic there,
   the way ``L`` lies from ``F`` (-X on a tie), else "G7X error: Not monotonic" (shown at the
   subroutine's last line, after the traverse to S).
