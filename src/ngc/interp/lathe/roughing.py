@@ -209,12 +209,13 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         moved, corners = moved_with_corners(profile, pass_side(profile, start, way), d, way,
                                             roughing=True)
         approach_line = Seg(LINE, start[0], start[1], moved[0].x0, moved[0].z0)
+        # (its arcs cut where they turn, as below)
+        walk, tags = _split(moved, corners, fr, s)
         if variant == 1:
             # (bridging its pockets as below)
-            tags = [MOVE] + [CORNER if i in corners else MOVE for i in range(len(moved))]
-            _bridged(out, fr, [approach_line, *moved], tags, len(moved) + 1, s, t)
+            _bridged(out, fr, [approach_line, *walk], [MOVE, *tags], len(walk) + 1, s, t)
             return
-        for seg in [approach_line, *moved]:
+        for seg in [approach_line, *walk]:
             _emit(out, seg)
         return
     moved, corners = moved_with_corners(profile, side, d, way, roughing=True)
@@ -389,6 +390,8 @@ def _bridged(out: Out, fr: _Frame, chain: list[Seg], tags: list[int], pockets_en
                 if hits:
                     exit_at = (j, min(hits, key=lambda hb: t * hb))
                     break
+            if exit_at is None:
+                return  # (a pocket the profile never climbs out of: the rest is left uncut)
             if exit_at is not None:
                 if tags[i] == CORNER:
                     out.feed(seg.x0, seg.z0)
