@@ -316,6 +316,11 @@ WORD_STEPS: Mapping[str, tuple[int, str | None]] = MappingProxyType({
 
 # A word that no code on its line gives a use to: rs274's message, in the order rs274 checks.
 UNUSED_WORD_MESSAGES: tuple[tuple[str, str], ...] = (
+    ("d", "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it"),
+    ("$", "$ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 or "
+          "G97 to use it"),
+    ("e", "E word with no G70, G76, M66, M67 or M68 to use it"),
+    ("h", "H word with no G43 or G76 to use it"),
     ("i", "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it"),
     ("j", "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it"),
     ("k", "K word with no G2, G3, G33, G33.1, G76, or G87 to use it"),
@@ -326,11 +331,6 @@ UNUSED_WORD_MESSAGES: tuple[tuple[str, str], ...] = (
     ("q", "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that "
           "uses it"),
     ("r", "R word with no g code that uses it"),
-    ("d", "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it"),
-    ("h", "H word with no G43 or G76 to use it"),
-    ("e", "E word with no G70, G76, M66, M67 or M68 to use it"),
-    ("$", "$ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 or "
-          "G97 to use it"),
 )
 
 AXIS_LETTERS = _AXES
