@@ -4,9 +4,10 @@ profile subroutine, and the cycle (``interp/lathe``).
 rs274 runs the subroutine Q as the line ``O<q> CALL``: its control flow and parameter settings
 run (global parameters are given back their values afterwards), its G0/G1/G2/G3 moves (or the
 modal motion of a line with axis words) become the profile, in the distance modes of the cycle's
-line, U and W adding to X and Z, an A or C word asking for a fillet or chamfer at the move's end;
-nothing else of its lines runs.  The modal motion the last move leaves stays.  An error of the
-cycle itself is shown at the subroutine's last line.
+line, U and W adding to X and Z (refused in G91: "Cannot use U in incremental mode"), an A or C
+word asking for a fillet or chamfer at the move's end; nothing else of its lines runs.  The modal
+motion the last move leaves stays.  An error of the cycle itself is shown at the subroutine's last
+line.
 """
 
 from __future__ import annotations
@@ -45,6 +46,11 @@ def record(m: Machine, r: Words) -> None:
         if not ("x" in w or "z" in w or "u" in w or "w" in w or "y" in w):
             return
         code = st.motion
+    if not st.absolute:  # (the cycle line's G91, whatever the profile line says)
+        for letter in "uw":
+            if letter in w:
+                raise NgcSemanticError(
+                    f"G7x error: Cannot use {letter.upper()} in incremental mode (G91)")
     if "u" in w and "x" in w:
         raise NgcSemanticError("G7x error: Cannot use U and X in the same block")
     if "w" in w and "z" in w:
@@ -58,9 +64,9 @@ def record(m: Machine, r: Words) -> None:
         # (U and W add only when given: a Z of -0 stays -0, as rs274 shows it)
         x1 = w.get("x", x0) + u if "u" in w else w.get("x", x0)
         z1 = w.get("z", z0) + w["w"] if "w" in w else w.get("z", z0)
-    else:
-        x1 = x0 + w.get("x", 0.0) + u
-        z1 = z0 + w.get("w", 0.0) + w.get("z", 0.0)
+    else:  # (U and W refused above)
+        x1 = x0 + w.get("x", 0.0)
+        z1 = z0 + w.get("z", 0.0)
     end = [x1, pos[1], z1, pos[3], pos[4], pos[5]]
     kind = _KINDS.get(code, LINE)
     cx = cz = 0.0
