@@ -39,6 +39,11 @@ def check(st: State, r: Words, table: CodeTable) -> None:
         _check_axis_users(st, r, motion, non_modal, table)
     if non_modal == codes.G_MACHINE_COORDINATES:
         _check_g53(st, r, motion)
+    # (a code's required words before the words no code uses: "G4 E1" is "Dwell time missing")
+    for code in g.values():
+        row = table.g[code]
+        if row.requires and not any(letter in r.w for letter in row.requires):
+            raise NgcSemanticError(row.missing)
     if r.others:
         active = implied_motion(st, r, table) if motion is None else motion
         if motion is None and not r.has_axes and (active in threading.SYNCHRONIZED
@@ -49,10 +54,6 @@ def check(st: State, r: Words, table: CodeTable) -> None:
             _check_turns(r.w["p"])
         if r.m.get(codes.M_SPINDLE) == 19:
             spindle.check_orient(r.w)
-    for code in g.values():
-        row = table.g[code]
-        if row.requires and not any(letter in r.w for letter in row.requires):
-            raise NgcSemanticError(row.missing)
     if non_modal == 100:
         _check_g10(r)
     active = motion if motion is not None else implied_motion(st, r, table)
