@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+from cli_helpers import run
 from ngc import cli, report, rs274
 from ngc.canon import ops
 from ngc.canon.jsonl import ListSink
@@ -36,12 +37,6 @@ def bad(tmp_path: Path) -> Path:
     path = tmp_path / "bad.ngc"
     path.write_text(BAD)
     return path
-
-
-def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
-    code = cli.main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 # -- ngc canon ------------------------------------------------------------------------------------

@@ -15,7 +15,8 @@ from pathlib import Path
 import pytest
 
 import ngc
-from ngc import cli, options, rs274
+from cli_helpers import run
+from ngc import options, rs274
 from ngc.canon import ops
 from ngc.canon.jsonl import JsonSink, dumps, text_of
 from ngc.errors import NgcConfigError
@@ -31,12 +32,6 @@ STARTUP = [
     "SET_XY_ROTATION(0.0000)",
     "SET_FEED_REFERENCE(CANON_XYZ)",
 ]
-
-
-def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
-    code = cli.main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def ngc_process(*argv: str | bytes, cwd: Path, env: dict[str, str] | None = None,

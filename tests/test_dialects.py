@@ -19,7 +19,8 @@ import pytest
 
 import ngc
 import ngc.engine
-from ngc import cli, dialects, engine_report
+from cli_helpers import run
+from ngc import dialects, engine_report
 from ngc.canon.jsonl import JsonSink, ListSink
 from ngc.canon.ops import StraightFeed
 from ngc.canon.text import TextSink
@@ -77,12 +78,6 @@ def work(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     (tmp_path / "l.ngc").write_text(LINUXCNC)
     (tmp_path / "s.toml").write_text(SETUP)
     return tmp_path
-
-
-def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
-    code = cli.main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def engine_lines(out: str) -> list[str]:

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from cli_helpers import write
 from ngc.config.ini import Ini
 from ngc.errors import NgcConfigError
 from ngc.planner.config import (
@@ -18,13 +19,6 @@ from ngc.planner.config import (
     machine_from_ini,
     machine_from_toml,
 )
-
-
-def write(tmp_path: Path, name: str, text: str) -> str:
-    path = tmp_path / name
-    path.write_text(text)
-    return str(path)
-
 
 TOML_KEYS = [  # (the TOML text before the value, the key's name in messages, its range's key)
     *((f"{key} = ", key, key) for key in (

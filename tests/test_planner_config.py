@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from cli_helpers import write
 from ngc.config.ini import Ini
 from ngc.errors import NgcConfigError
 from ngc.planner import config
@@ -72,12 +73,6 @@ MAX_ACCELERATION = 20
 XYZ_LIMITS = ("[AXIS_X]\nMAX_VELOCITY = 10\nMAX_ACCELERATION = 100\n"
               "[AXIS_Y]\nMAX_VELOCITY = 10\nMAX_ACCELERATION = 100\n"
               "[AXIS_Z]\nMAX_VELOCITY = 5\nMAX_ACCELERATION = 50\n")
-
-
-def write(tmp_path: Path, name: str, text: str) -> str:
-    path = tmp_path / name
-    path.write_text(text)
-    return str(path)
 
 
 def ini_file(tmp_path: Path, text: str) -> Ini:

@@ -20,7 +20,8 @@ from pathlib import Path
 
 import pytest
 
-from ngc import cli, time_report
+from cli_helpers import run
+from ngc import time_report
 from ngc.planner import timing, trajectory
 from ngc.planner.geometry import Line
 from ngc.planner.lookahead import Segment
@@ -49,12 +50,6 @@ TOOL_CHANGE = "G21 G61\nG1 X10 F600\nT1 M6\nG1 X20\nT2 M6\nG1 X30\nM2\n"
 BAD = "G21 F100\nG1 X1\nG2 X2 R0.1\nM2\n"
 SPEED_BOUND = math.hypot(200.0, 200.0, 100.0)  # the default machine's X, Y, Z at full speed
 PERIOD = DEFAULT_MACHINE.servo_period
-
-
-def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
-    code = cli.main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def program(tmp_path: Path, text: str, name: str = "prog.ngc") -> str:

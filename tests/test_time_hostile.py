@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 
+from cli_helpers import run, write
 from ngc import cli
 from ngc.errors import NgcError
 from ngc.planner.geometry import blend_arc
@@ -22,21 +23,6 @@ from ngc.planner.timing import time_file, time_text
 from ngc.planner.trajectory import DEFAULT_MAX_ROWS
 
 NINES = "9" * 160
-
-
-def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
-    code = cli.main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-def write(tmp_path: Path, name: str, text: str | bytes) -> str:
-    path = tmp_path / name
-    if isinstance(text, bytes):
-        path.write_bytes(text)
-    else:
-        path.write_text(text)
-    return str(path)
 
 
 def finite_times(machine: Machine, text: str) -> float:

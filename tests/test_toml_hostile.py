@@ -8,25 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from ngc import cli
+from cli_helpers import run, write
 from ngc.errors import NgcConfigError
 from ngc.planner.config import machine_from_toml
-
-
-def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
-    code = cli.main(list(argv))
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-def write(tmp_path: Path, name: str, text: str | bytes) -> str:
-    path = tmp_path / name
-    if isinstance(text, bytes):
-        path.write_bytes(text)
-    else:
-        path.write_text(text)
-    return str(path)
-
 
 DEEP = "a = " + "[" * 5000 + "]" * 5000 + "\n"
 

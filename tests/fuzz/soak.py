@@ -152,6 +152,22 @@ def make_input(cfg: Config, source: str, index: int) -> tuple[random.Random, str
 # ---- the API ------------------------------------------------------------------------------------
 
 
+def _swept(klass: str, detail: str) -> tuple[str, str]:
+    """Remove what a run left in the working directory: a run that left anything fails ("wrote
+    files", unless it failed otherwise), its detail naming the files."""
+    left = os.listdir()
+    if left:
+        for name in left:
+            if os.path.isdir(name):
+                shutil.rmtree(name, ignore_errors=True)
+            else:
+                with contextlib.suppress(OSError):
+                    os.unlink(name)
+        klass = klass or "wrote files"
+        detail += f"\nfiles left in the working directory: {sorted(left)}"
+    return klass, detail
+
+
 def api_run(data: bytes, decoding: str, feed: str, max_iterations: int,
             time_limit: float) -> tuple[str, float, str, str]:
     """Run one program in this process: (outcome, seconds, failure class or "", detail)."""
@@ -169,16 +185,7 @@ def api_run(data: bytes, decoding: str, feed: str, max_iterations: int,
     except Exception as exc:
         klass, detail = hostile.failure_class(exc), traceback.format_exc()
     seconds = time.perf_counter() - start
-    left = os.listdir()
-    if left:
-        for name in left:
-            if os.path.isdir(name):
-                shutil.rmtree(name, ignore_errors=True)
-            else:
-                with contextlib.suppress(OSError):
-                    os.unlink(name)
-        klass = klass or "wrote files"
-        detail += f"\nfiles left in the working directory: {sorted(left)}"
+    klass, detail = _swept(klass, detail)
     return ("fail" if klass else outcome), seconds, klass, detail
 
 
@@ -250,16 +257,7 @@ def time_api_run(data: bytes, files: dict[str, Path], rng: random.Random, cfg: C
     except Exception as exc:
         klass, detail = hostile.failure_class(exc), traceback.format_exc()
     seconds = time.perf_counter() - start
-    left = os.listdir()
-    if left:
-        for name in left:
-            if os.path.isdir(name):
-                shutil.rmtree(name, ignore_errors=True)
-            else:
-                with contextlib.suppress(OSError):
-                    os.unlink(name)
-        klass = klass or "wrote files"
-        detail += f"\nfiles left in the working directory: {sorted(left)}"
+    klass, detail = _swept(klass, detail)
     return ("fail" if klass else outcome), seconds, klass, detail
 
 
