@@ -261,17 +261,10 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
         if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS and not roughing:
             raise NgcSemanticError(PARALLEL)
         if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
-            was = moves[i - 1]
-            if (roughing and prev.kind == LINE and len(out) > 1 and (prev.x1 - prev.x0)
-                    * (was.x1 - was.x0) + (prev.z1 - prev.z0) * (was.z1 - was.z0) < 0):
+            if roughing and _turned_round(out, moves[i - 1], prev.x1, prev.z1):
                 # (a line turned round, as below, whose end meets the next move as it is)
-                corners.discard(len(out) - 1)
-                out.pop()
-                prev = out[-1]
-                r_arc = _carrier_radius(prev, shifted[i - 2], moves[i], side, d)
-                px, pz = _crossing(prev, seg, mirror, r_arc)
-                out[-1] = prev._replace(x1=px, z1=pz)
-                out.append(seg._replace(x0=px, z0=pz))
+                _join_past(out, corners, seg, mirror,
+                           _carrier_radius(out[-2], shifted[i - 2], moves[i], side, d))
                 continue
             out.append(seg)
             continue
@@ -294,18 +287,33 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
             continue
         r_arc = _carrier_radius(prev, shifted[i - 1], moves[i], side, d)
         px, pz = _crossing(prev, seg, mirror, r_arc)
-        was = moves[i - 1]  # (the line as programmed: which way it goes)
-        if (roughing and prev.kind == LINE and len(out) > 1
-                and (px - prev.x0) * (was.x1 - was.x0) + (pz - prev.z0) * (was.z1 - was.z0) < 0):
+        if roughing and _turned_round(out, moves[i - 1], px, pz):
             # a line shorter than the distance turns round between its corners: G71/G72 leave
             # it out, the lines on either side meeting where their carriers cross
-            corners.discard(len(out) - 1)
-            out.pop()
-            prev = out[-1]
-            px, pz = _crossing(prev, seg, mirror, r_arc)
+            _join_past(out, corners, seg, mirror, r_arc)
+            continue
         out[-1] = prev._replace(x1=px, z1=pz)
         out.append(seg._replace(x0=px, z0=pz))
     return out, corners
+
+
+def _turned_round(out: list[Seg], was: Seg, px: float, pz: float) -> bool:
+    """Whether the moved line ``out[-1]``, ending at (px, pz), runs against ``was``, the line as
+    programmed (not the first move of ``out``)."""
+    prev = out[-1]
+    return (len(out) > 1 and prev.kind == LINE
+            and (px - prev.x0) * (was.x1 - was.x0) + (pz - prev.z0) * (was.z1 - was.z0) < 0)
+
+
+def _join_past(out: list[Seg], corners: set[int], seg: Seg, mirror: float, r_arc: float) -> None:
+    """Leave out the move ``out[-1]``: the move before it and ``seg`` meet where their carriers
+    cross (``r_arc``: see ``_crossing``), and ``seg`` follows."""
+    corners.discard(len(out) - 1)
+    out.pop()
+    prev = out[-1]
+    px, pz = _crossing(prev, seg, mirror, r_arc)
+    out[-1] = prev._replace(x1=px, z1=pz)
+    out.append(seg._replace(x0=px, z0=pz))
 
 
 def _without_nowhere(profile: Profile) -> Profile:
