@@ -235,3 +235,16 @@ def test_a_blend_for_a_turn_too_slight_for_its_cosine(theta: float) -> None:
     # cos(θ/2) is 1.0 for θ below some 2e-8 rad: the tolerance's radius divided by zero
     blend = blend_arc(theta, 10.0, 1.0, 0.01, 500.0, 866.0)
     assert blend is not None and math.isfinite(blend.radius) and blend.radius > 0.0
+
+
+@pytest.mark.parametrize("period", [0.1, 0.25, 1.0])
+def test_a_stop_just_past_whole_servo_periods_keeps_the_moves_time(period: float) -> None:
+    # Y at 1 unit/s and 1e9 units/s²: the move takes 1 s and 2 ns, a millionth of a period past
+    # whole periods at most.  The stop was rounded down to the whole periods, so by_kind, by_tool
+    # and by_line (the move's own 1.000000001 s) came to more than the total.
+    machine = Machine(axes={"X": AxisLimits(1.0, 1e9), "Y": AxisLimits(1.0, 1e9)},
+                      servo_period=period)
+    result = time_text("G0 Y-1\nM2\n", machine)
+    for parts in (result.by_kind, result.by_tool, dict(result.by_line.items())):
+        assert math.fsum(parts.values()) <= result.total_s
+    assert result.total_s == pytest.approx(1.0, abs=1e-6)

@@ -55,6 +55,9 @@ SQRT3_2 = math.sqrt(3.0) / 2.0
 # s: the longest run the planner counts (some 31,700 years).  Past it a time is no estimate,
 # and its sums lose the servo period's precision long before they overflow.
 MAX_SECONDS = 1e12
+# the share of a servo cycle past a whole number of cycles that a group of joined moves may last
+# and still take only those cycles (the sums' rounding error, not one more cycle)
+CYCLE_NOISE = 1e-6
 # the most of an axis's acceleration a kink or an exact-path corner may take: the moves beside it
 # keep at least the rest, whatever ARC_BLEND_KINK_RATIO says (a ratio of 1 or more would leave
 # them none, or less than none)
@@ -491,10 +494,14 @@ class Planner:
         self.done(seg)
 
     def _settle(self) -> None:
-        """Motion has come to rest: round the group of joined moves to whole servo cycles."""
+        """Motion has come to rest: round the group of joined moves up to whole servo cycles.
+        A group less than :data:`CYCLE_NOISE` of a cycle past a whole number of cycles is the
+        sums' rounding error: it takes those cycles, but never less than it lasts itself (the
+        moves' own times, which by_kind, by_tool and by_line add up, fit in the total)."""
         if self.group > 0.0:
-            cycles = math.ceil(self.group / self.period - 1e-6)
-            self.clock += cycles * self.period
+            cycles = math.ceil(self.group / self.period - CYCLE_NOISE)
+            whole = cycles * self.period
+            self.clock += whole if whole >= self.group else self.group
         self.group = 0.0
         self.vnow = 0.0
 
