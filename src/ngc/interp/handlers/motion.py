@@ -106,7 +106,7 @@ def feed(it: Machine, w: dict[str, float], end: list[float]) -> None:
     """G1."""
     st = it.state
     if st.feed_mode != 940 or st.feed == 0.0:
-        _check_feed(it, w, "g1")
+        check_feed(it, w, "g1")
         if st.feed_mode == 930:
             start = st.pos if it.comp is None else it.comp.prog  # the programmed move's length
             st.feed = _inverse_rate(w["f"], _line_length(start, end))  # #<_feed> reads it
@@ -118,7 +118,8 @@ def feed(it: Machine, w: dict[str, float], end: list[float]) -> None:
     st.pos = end
 
 
-def _check_feed(it: Machine, w: dict[str, float], name: str) -> None:
+def check_feed(it: Machine, w: dict[str, float], name: str) -> None:
+    """A straight feed ``name`` may run: a feed rate (an F word in G93), a spindle speed in G95."""
     st = it.state
     if st.feed_mode == 930:
         if "f" not in w:
@@ -148,6 +149,19 @@ def _inverse_rate(f: float, length: float) -> float:
 
 
 # -- arcs ---------------------------------------------------------------------------------------
+def check_arc_feed(it: Machine, w: dict[str, float]) -> None:
+    """An arc may run: an F word in G93, else a feed rate and, in G95, a spindle speed."""
+    st = it.state
+    if st.feed_mode == 930:
+        if "f" not in w:
+            raise NgcSemanticError("F word missing with inverse time arc move")
+        return
+    if st.feed == 0.0:
+        raise NgcSemanticError("Cannot make arc with zero feed rate")
+    if st.feed_mode == 950 and st.speed == 0.0:
+        raise NgcSemanticError("Cannot feed with zero spindle speed in feed per rev mode")
+
+
 def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
     """G2 (clockwise) / G3 (counterclockwise) in the active plane."""
     st = it.state
@@ -167,11 +181,7 @@ def arc(it: Machine, w: dict[str, float], end: list[float], code: int) -> None:
         raise NgcSemanticError(f"{forbidden.upper()} word given for arc in {pname} plane")
     if "r" in w and (letters[0] in w or letters[1] in w):
         raise NgcSemanticError("Mixed radius ijk format for arc")
-    if st.feed_mode != 930:  # (inverse time: the F word was checked above)
-        if st.feed == 0.0:
-            raise NgcSemanticError("Cannot make arc with zero feed rate")
-        if st.feed_mode == 950 and st.speed == 0.0:
-            raise NgcSemanticError("Cannot feed with zero spindle speed in feed per rev mode")
+    check_arc_feed(it, w)
     # a whole number of turns, at least 1 (checked before the line ran)
     turns = round(w["p"]) if "p" in w else 1  # within 0.001 of a whole number
     start = st.pos if compensation is None else compensation.prog

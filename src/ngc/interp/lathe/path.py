@@ -16,6 +16,9 @@ if TYPE_CHECKING:
     from ..machine import Machine
 
 
+_NO_WORDS: dict[str, float] = {}
+
+
 class Out:
     """Emits a cycle's moves on a machine; Y and the rotary axes stay where they are.  With
     cutter radius compensation on (G70 runs under it) the moves are compensated like programmed
@@ -45,6 +48,8 @@ class Out:
         self._straight(ops.StraightTraverse, x, z)
 
     def feed(self, x: float, z: float) -> None:
+        # (a cycle's moves are blocks of their own: no F word, so none in G93)
+        motion.check_feed(self.m, _NO_WORDS, "g1")
         self._straight(ops.StraightFeed, x, z)
 
     def _straight(self, kind: type, x: float, z: float) -> None:
@@ -63,6 +68,7 @@ class Out:
         """G2 (kind CW) or G3 (CCW) to (x, z) around (cx, cz) in the XZ plane; ``checked``: its
         radii at start and end are held to a programmed arc's tolerance first."""
         m = self.m
+        motion.check_arc_feed(m, _NO_WORDS)
         if checked:
             start = m.state.pos if m.comp is None else m.comp.prog
             check_radii(start[0], start[2], x, z, cx, cz, m.state.metric)
