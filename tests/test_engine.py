@@ -402,7 +402,14 @@ def test_more_errors(text: str, message: str) -> None:
     ("[fixtures.1]\nQ = 1", "fixtures.1: unknown key 'Q' \\(X ... W, tool_axis\\)"),
     ("[fixtures.1]\ntool_axis = 'VZ'", "fixtures.1.tool_axis must be an axis letter"),
     ("[axes.Q]\nmax_speed = 1", "axes: 'Q' is not an axis"),
-    ("[axes.X]\nmax_speed = 0", "axes.X.max_speed must be positive"),
+    ("[axes.X]\nmax_speed = 0", "axes.X.max_speed must be a number from 0.000001 to 1000000, "
+                                "not 0"),
+    ("[axes.X]\nmax_speed = 5e-324", "axes.X.max_speed must be a number from 0.000001 to "),
+    ("[axes.A]\nmax_speed = inf", "axes.A.max_speed must be a number from .* not inf"),
+    ("[fixtures.1]\nX = nan", "fixtures.1.X must be a number from -1000000000 to 1000000000, "
+                              "not nan"),
+    ("[fixtures.0]\nZ = 1e300", "fixtures.0.Z must be a number from -1000000000 to "),
+    ("[tools.1]\nlength = -1.7976931348623157e308", "tools.1.length must be a number from "),
     ("fixtures = 3", "fixtures must be a table"),
     ("tool = [", "setup file .*: "),
 ])

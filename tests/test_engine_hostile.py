@@ -10,7 +10,7 @@ import tracemalloc
 
 import pytest
 
-from ngc.engine import Engine, EngineSegment, Op, run
+from ngc.engine import Engine, EngineSegment, Op, Setup, run
 from ngc.errors import NgcError
 
 PROGRAM = "G21\nF 10\nG1 X 1 Y 2\nmove PZ 0 90 1 0\nM2\n"
@@ -83,14 +83,24 @@ def test_an_arc_too_large_to_count_its_segments() -> None:
         ops("move PZ 0 [10**300] [10**300] 0", 1000)
 
 
-@pytest.mark.parametrize("text", [
-    "G103 PZ 0 1\nmove PZ 0 360 [10**300]",  # lengths whose squares overflow
-    "G103 PZ 0 1\nF1\nG1 PZ 0 [10**300] 1",
-    "F1\nG1 X[10**300] Y[10**300]",
+@pytest.mark.parametrize(("text", "line"), [
+    ("G103 PZ 0 1\nmove PZ 0 360 [10**300]", 2),  # lengths whose squares overflow
+    ("G103 PZ 0 1\nF1\nG1 PZ 0 [10**300] 1", 3),
+    ("F1\nG1 X[10**300] Y[10**300]", 2),
+    ("G91\nmove X[10**308]\nmove X[10**308]", 2),  # a length past the largest number
+    ("G20\nmove X[10**307]", 2),  # in mm
 ])
-def test_huge_lengths_give_infinite_durations(text: str) -> None:
-    last = ops(text, 1000)[-1]
-    assert isinstance(last, EngineSegment) and last.duration == math.inf
+def test_a_move_too_large_for_numbers_is_an_error(text: str, line: int) -> None:
+    # they gave segments of duration inf, or of NaN positions and durations
+    with pytest.raises(NgcError, match="The move is too large to run") as info:
+        ops(text, 1000)
+    assert info.value.line == line
+
+
+def test_a_move_at_the_slowest_speed_a_sheet_allows_is_finite() -> None:
+    setup = Setup(max_speed=(1e-6,) * 9)
+    last = list(run("move X1000000000 Y-1000000000 A1000000000", Engine(setup=setup, max_iterations=10)))[-1]
+    assert isinstance(last, EngineSegment) and math.isfinite(last.duration)
 
 
 def test_segments_are_made_as_they_are_taken() -> None:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Iterator
+from itertools import chain
 from typing import NamedTuple
 
 from . import bezier
@@ -98,6 +99,12 @@ def polar_point(eng: Engine, name: str, values: list[float]) -> Clause:
     p.radius = radius
     target = [c + radius * ui + offset * ni for c, ui, ni in zip(p.centre, u, n, strict=True)]
     return to(eng, {k: target[k] for k in range(9) if target[k] != eng.pos[k]})
+
+
+# A segment whose positions, length or duration a number cannot hold (past some 1e308; a length
+# whose square passes it, past 1e154): an error, not a segment of infinities or NaNs.
+TOO_LARGE = ("The move is too large to run: its positions, length or time are past what a number "
+             "holds")
 
 
 def arc_count(sweep: float, radius: float) -> int:
@@ -286,6 +293,8 @@ def timed(eng: Engine, line: int, mm: dict[int, Cubic], seconds: float, motion: 
             p, d = eng.pos[k], speed * seconds
             mm[k] = (p, p + d / 3.0, p + 2.0 * d / 3.0, p + d)
             eng.pos[k] = p + d
+    if not (math.isfinite(seconds) and all(map(math.isfinite, chain.from_iterable(mm.values())))):
+        raise EngineError(TOO_LARGE)
     axes = {AXES[k]: (eng.shown(k, c[0]), eng.shown(k, c[1]), eng.shown(k, c[2]),
                       eng.shown(k, c[3])) for k, c in sorted(mm.items())}
     yield EngineSegment(line, seconds, axes, motion)

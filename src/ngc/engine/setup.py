@@ -19,7 +19,9 @@ speed".  Lengths are millimetres, angles degrees, speeds per second::
     [axes.Z]                  # a motor's maximum speed (rapids run at it; G100 is a share of it)
     max_speed = 10.0          # mm/s (degrees/s for A B C); 25 mm/s and 360 degrees/s by default
 
-Every fixture starts with no offsets.  An unknown key, table or value is an error that names it.
+Every fixture starts with no offsets.  An unknown key, table or value is an error that names it,
+and so is a number out of its range: offsets and lengths within 1e9 (mm or degrees) either way,
+speeds from 1e-6 to 1e6.
 """
 
 from __future__ import annotations
@@ -34,6 +36,12 @@ ROTARY = frozenset("ABC")
 DEFAULT_LINEAR_SPEED = 25.0
 DEFAULT_ROTARY_SPEED = 360.0
 FIXTURES = range(7)
+# The ranges of the sheet's values.  Offsets and tool lengths (mm, or degrees): a thousand
+# kilometres is past any machine (the planner's MAX_COORDINATE).  Speeds (mm/s, degrees/s): the
+# machine files' range of velocities (docs/machine.md).  Within them every position and duration
+# a program of finite numbers gives stays finite.
+MAX_OFFSET = 1e9
+MIN_SPEED, MAX_SPEED = 1e-6, 1e6
 
 
 @dataclass(frozen=True)
@@ -51,10 +59,20 @@ class Setup:
         DEFAULT_ROTARY_SPEED if a in ROTARY else DEFAULT_LINEAR_SPEED for a in AXES)
 
 
-def _number(value: object, where: str) -> float:
+def _number(value: object, where: str, low: float, high: float) -> float:
+    """A number from ``low`` to ``high`` (so not infinite, nor NaN)."""
     if isinstance(value, bool) or not isinstance(value, int | float):
         raise ValueError(f"{where} must be a number, not {value!r}")
-    return float(value)
+    number = float(value)
+    if not low <= number <= high:  # (a NaN is not within)
+        raise ValueError(f"{where} must be a number from {_decimal(low)} to {_decimal(high)}, "
+                         f"not {value!r}")
+    return number
+
+
+def _decimal(value: float) -> str:
+    """``value`` written out in decimals (1000000000, 0.000001), as a person types it."""
+    return str(int(value)) if value == int(value) else f"{value:.12f}".rstrip("0")
 
 
 def _table(value: object, where: str) -> dict[str, object]:
@@ -100,7 +118,8 @@ def parse(data: Mapping[str, object]) -> Setup:
                 for k, v in _table(entry, where).items():
                     if k != "length":
                         raise ValueError(f"{where}: unknown key '{k}' (length)")
-                    lengths[_index(name, "tools")] = _number(v, f"{where}.length")
+                    lengths[_index(name, "tools")] = _number(v, f"{where}.length",
+                                                             -MAX_OFFSET, MAX_OFFSET)
         elif key == "fixtures":
             for name, entry in _table(value, "fixtures").items():
                 where = f"fixtures.{name}"
@@ -110,7 +129,8 @@ def parse(data: Mapping[str, object]) -> Setup:
                     if k == "tool_axis":
                         axis = _tool_axis(v, f"{where}.tool_axis")
                     elif k in AXES:
-                        offsets[AXES.index(k)] = _number(v, f"{where}.{k}")
+                        offsets[AXES.index(k)] = _number(v, f"{where}.{k}", -MAX_OFFSET,
+                                                         MAX_OFFSET)
                     else:
                         raise ValueError(f"{where}: unknown key '{k}' (X ... W, tool_axis)")
                 fixtures[_index(name, "fixtures", FIXTURES)] = Fixture(tuple(offsets), axis)
@@ -122,10 +142,8 @@ def parse(data: Mapping[str, object]) -> Setup:
                 for k, v in _table(entry, where).items():
                     if k != "max_speed":
                         raise ValueError(f"{where}: unknown key '{k}' (max_speed)")
-                    speed = _number(v, f"{where}.max_speed")
-                    if speed <= 0.0:
-                        raise ValueError(f"{where}.max_speed must be positive")
-                    speeds[AXES.index(name)] = speed
+                    speeds[AXES.index(name)] = _number(v, f"{where}.max_speed", MIN_SPEED,
+                                                       MAX_SPEED)
         else:
             raise ValueError(f"unknown key '{key}' (tool, tools, fixtures, axes)")
     return Setup(tuple(fixtures), tool, lengths, tuple(speeds))
