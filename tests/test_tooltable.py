@@ -46,6 +46,15 @@ def test_skipped_lines_and_their_slots() -> None:
     )
 
 
+@pytest.mark.parametrize("line", ["T9 P" + "9" * 400 + " D0.032", "T" + "9" * 400 + " P3",
+                                  "T9 P3 Q" + "9" * 400])
+def test_a_number_past_a_float_in_t_p_or_q_skips_the_line(line: str) -> None:
+    # rs274 skips the line with a 400-digit P; its number was turned into an int: OverflowError
+    table = parse_tool_table(f"T1 P1\n{line}\nT3 P3\n")
+    assert table.skipped == (line,)
+    assert [e.number for e in table.entries] == [1, -1, 3]
+
+
 def test_first_entry_of_a_number_wins() -> None:
     tools = Tools(parse_tool_table("T1 P1 Z1\nT1 P2 Z2\n"))
     entry = tools.find(1)

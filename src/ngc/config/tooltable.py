@@ -13,6 +13,7 @@ and are kept as written: a program sees them converted to its units.
 
 from __future__ import annotations
 
+import math
 import re
 from typing import NamedTuple
 
@@ -111,6 +112,8 @@ def _parse(line: str) -> tuple[ToolEntry, bool] | str | None:
         fields[letter] = value
     if "t" not in fields:
         return None
+    if not all(math.isfinite(fields.get(letter, 0.0)) for letter in "tpq"):
+        return line  # a number past a float (400 digits) is no tool, pocket or orientation
     offsets = tuple(fields.get(letter, 0.0) for letter in OFFSET_LETTERS)
     entry = ToolEntry(int(fields["t"]), int(fields.get("p", 0)), offsets, fields.get("d", 0.0),
                       fields.get("i", 0.0), fields.get("j", 0.0), int(fields.get("q", 0)),
