@@ -439,6 +439,9 @@ def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float,
     if crossing is None:  # outside: an arc around the corner
         if c.kind == LINE or kind == LINE:  # (not an arc held before an arc)
             check_held(c)
+        # the held move ends at the compensated point, which a lathe cycle's profile may have
+        # moved from where the move was held to (see ``lathe._move_to``)
+        move_held_end(m, c, c.ca, c.cb)
         flush(m)
         if refusal:
             raise NgcSemanticError(refusal)
@@ -455,7 +458,7 @@ def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float,
             m.move(ops.ArcFeed, fields, m.label, m.line)
         c.ca, c.cb = sa, sb
         return
-    _move_held_end(m, c, *crossing)
+    move_held_end(m, c, *crossing)
     check_held(c)
 
 
@@ -596,7 +599,7 @@ def _sweep(k1: float, k2: float, sa: float, sb: float, ea: float, eb: float,
     return turn if turn > WHOLE_TURN_SLIP else TWO_PI
 
 
-def _move_held_end(m: Machine, c: Compensation, xa: float, xb: float) -> None:
+def move_held_end(m: Machine, c: Compensation, xa: float, xb: float) -> None:
     """The held move (and the moves out of the plane queued behind it) now end at ``xa, xb``."""
     oa, ob = xa + c.shift_a, xb + c.shift_b
     item = c.item
@@ -663,7 +666,7 @@ def take_canon_point(m: Machine) -> None:
     prog[a] = c.prog[a]
     prog[b] = c.prog[b]
     c.prog = prog
-    _move_held_end(m, c, c.sa, c.sb)
+    move_held_end(m, c, c.sa, c.sb)
     if c.kind == LINE:
         normal = _atan2(c.sb - prog[b], c.sa - prog[a])
         c.pdir = normal - HALF_PI if c.side > 0 else normal + HALF_PI
