@@ -5,6 +5,7 @@
     python tests/fuzz/soak.py --replay tests/fuzz/found/soak-1-api-17.ngc [--decoding utf-8]
     python tests/fuzz/soak.py --shrink tests/fuzz/found/soak-1-api-17.ngc
     python tests/fuzz/soak.py --api 0 --time 20000 --time-cli 1000 --seed 1 --jobs 2
+    python tests/fuzz/soak.py --api 0 --engine 200000 --lathe 50000 --seed 1 --jobs 2
 
 Inputs come from tests/fuzz/hostile.py (random bytes, token soup, mutated golden programs); input
 ``i`` of a seed is always the same program.  API inputs run in worker processes, each on a fresh
@@ -26,6 +27,16 @@ time`` with the machine files, ``--format json`` and ``--trajectory`` picked at 
 the checks above: every time finite and non-negative, the parts adding up to the total within
 the documented rounding, trajectory rows finite with ``t`` non-decreasing, reports without NaN,
 no trajectory file left by a failed run.
+
+``--engine N`` soaks the engine dialect (tests/fuzz/engined.py): random setup sheets (legal ones
+at the ends of their ranges, keys left out, hostile TOML) and engine programs (token soup of the
+dialect's words, mutated examples of the seed and golden cases), each run in a worker as ``ngc
+canon --dialect engine`` (text and JSON) and ``ngc check --dialect engine`` run it.  ``--lathe
+N`` soaks lathe programs (tests/fuzz/lathed.py): the fuzzers' lathe jobs and G71/G72 profiles,
+as generated and mutated (numbers made extreme, lines dropped or duplicated), with their tool
+tables, checked, canon'd and timed (with a trajectory) on random lathes.  Beside the checks
+above: segments, dwells and summaries finite and non-negative, outputs without NaN; the lathe's
+times pass the ``--time`` checks.
 """
 
 from __future__ import annotations
@@ -59,7 +70,9 @@ for _p in (str(REPO / "src"), str(HERE)):
     if _p not in sys.path:
         sys.path.insert(0, _p)
 
+import engined  # noqa: E402
 import hostile  # noqa: E402
+import lathed  # noqa: E402
 import timed  # noqa: E402
 
 from ngc.errors import NgcError  # noqa: E402
@@ -68,6 +81,10 @@ DEFAULT_OUT = HERE / "found"
 API_CHUNK = 250  # API inputs per task sent to a worker
 TIME_CHUNK = 50  # ngc time inputs per task (each takes longer)
 TIME_SOURCES = ("time", "time-cli")
+SURFACE_CHUNK = 50  # engine and lathe inputs per task
+SURFACES = ("engine", "lathe")  # run in the worker by surface_input
+SOURCES = ("api", "cli", *TIME_SOURCES, *SURFACES)
+IN_WORKER = ("api", "time", *SURFACES)  # sources run in the worker itself, under the time limit
 GRACE_S = 10.0  # a worker this long past its own time limit is stuck (in C code) and is killed
 CLI_TIMEOUT_S = 10.0  # a command line run is killed after this (over --time-limit is a failure)
 OUTPUT_LIMIT = 64 << 20  # ... or after this many bytes of output
@@ -92,6 +109,7 @@ class Config:
     keep: int
     corpus: list[bytes] = field(default_factory=hostile.golden_corpus)
     timing: list[bytes] = field(default_factory=timed.timing_corpus)
+    engine_programs: list[bytes] = field(default_factory=engined.corpus)
     cli_variants: list[CliVariant] = field(default_factory=list)
     python: list[str] = field(default_factory=lambda: [sys.executable])
 
@@ -143,6 +161,12 @@ def make_input(cfg: Config, source: str, index: int) -> tuple[random.Random, str
     rng = random.Random(f"{cfg.seed}/{source}/{index}")
     if source in TIME_SOURCES:
         kind, data = timed.program(rng, cfg.corpus, cfg.timing)
+        return rng, kind, data
+    if source == "engine":
+        kind, data = engined.program(rng, cfg.engine_programs)
+        return rng, kind, data
+    if source == "lathe":
+        kind, data = lathed.program(rng)
         return rng, kind, data
     weighted = [k for k in cfg.kinds for _ in range(KIND_WEIGHTS[k])]
     kind = rng.choice(weighted)
@@ -259,6 +283,49 @@ def time_api_run(data: bytes, files: dict[str, Path], rng: random.Random, cfg: C
     seconds = time.perf_counter() - start
     klass, detail = _swept(klass, detail)
     return ("fail" if klass else outcome), seconds, klass, detail
+
+
+def surface_input(cfg: Config, source: str, index: int, result: TaskResult,
+                  rss_flagged: list[bool], base: Path) -> None:
+    """One input of the engine or the lathe surface, in this process: its machine inputs in a
+    folder of its own (tests/fuzz/engined.py, lathed.py: ``soak_run``)."""
+    rng, kind, data = make_input(cfg, source, index)
+    module = engined if source == "engine" else lathed
+    folder = base / f"{source}-{index}"
+    folder.mkdir()
+    configs: dict[str, bytes] = {}
+    start = time.perf_counter()
+    klass = detail = ""
+    try:
+        with hostile.time_limit(cfg.time_limit):
+            outcome = module.soak_run(rng, data, folder, cfg.max_iterations, configs)
+    except NgcError as exc:
+        outcome, detail = "NgcError", exc.render()
+    except module.CheckError as exc:
+        klass, detail = f"check: {str(exc).split(':')[0]}", str(exc)
+    except hostile.Overtime:
+        klass = f"over {cfg.time_limit:g} s"
+    except Exception as exc:
+        klass, detail = hostile.failure_class(exc), traceback.format_exc()
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+    seconds = time.perf_counter() - start
+    klass, detail = _swept(klass, detail)
+    outcome = "fail" if klass else outcome
+    how = {"configs": configs}
+    result.counts[f"{source} {kind} {outcome}"] += 1
+    if seconds > result.slowest[0]:
+        result.slowest = (seconds, f"{source} {index}")
+    if klass:
+        add_failure(result, cfg, Failure(source, index, kind, f"{source} {klass}", detail, data,
+                                         seconds, how))
+    rss_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    if rss_mb > cfg.rss_limit_mb and not rss_flagged[0]:
+        rss_flagged[0] = True
+        add_failure(result, cfg, Failure(source, index, kind,
+                                         f"{source} RSS over {cfg.rss_limit_mb:g} MB",
+                                         f"the worker's peak RSS reached {rss_mb:.1f} MB with "
+                                         f"this input ({klass or outcome})", data, seconds, how))
 
 
 def add_failure(result: TaskResult, cfg: Config, failure: Failure) -> None:
@@ -540,6 +607,8 @@ def worker_main(conn: Connection, status: Any, cfg: Config) -> None:
                     time_input(cfg, index, result, rss_flagged, base)
                 elif task.source == "time-cli":
                     time_cli_input(cfg, index, result, base)
+                elif task.source in SURFACES:
+                    surface_input(cfg, task.source, index, result, rss_flagged, base)
                 else:
                     cli_input(cfg, index, result, base)
             status[0] = -1
@@ -610,8 +679,7 @@ def run_campaign(cfg: Config, tasks: list[Task], jobs: int, progress: bool) -> T
     totals = Totals()
     pending = deque(tasks)
     workers = [start_worker(ctx, cfg) for _ in range(max(1, jobs))]
-    total = Counter({s: sum(t.stop - t.start for t in tasks if t.source == s)
-                     for s in ("api", "cli", *TIME_SOURCES)})
+    total = Counter({s: sum(t.stop - t.start for t in tasks if t.source == s) for s in SOURCES})
     started, shown = time.monotonic(), 0.0
     try:
         while pending or any(w.task for w in workers):
@@ -626,7 +694,7 @@ def run_campaign(cfg: Config, tasks: list[Task], jobs: int, progress: bool) -> T
                     if w.conn in ready:
                         workers[i] = collect(ctx, cfg, w, totals, pending)
                     continue
-                limit = cfg.time_limit if w.task.source in ("api", "time") else CLI_TIMEOUT_S
+                limit = cfg.time_limit if w.task.source in IN_WORKER else CLI_TIMEOUT_S
                 if w.status[0] >= 0 and time.monotonic() - w.status[1] > limit + GRACE_S:
                     w.process.kill()
                     w.process.join()
@@ -680,7 +748,8 @@ def requeue(ctx: Any, cfg: Config, w: Worker, totals: Totals, pending: deque[Tas
 def show_progress(totals: Totals, total: Counter[str], elapsed: float) -> None:
     fails = sum(n for k, n in totals.counts.items() if k.startswith("failure "))
     rate = totals.done["api"] / max(elapsed, 1e-9)
-    timing = "".join(f"  {s} {totals.done[s]}/{total[s]}" for s in TIME_SOURCES if total[s])
+    timing = "".join(f"  {s} {totals.done[s]}/{total[s]}" for s in (*TIME_SOURCES, *SURFACES)
+                     if total[s])
     print(f"\r  api {totals.done['api']}/{total['api']}  cli {totals.done['cli']}/{total['cli']}"
           f"{timing}  failures {fails}  {rate:.0f} API inputs/s  {elapsed:.0f}s ", end="", file=sys.stderr,
           flush=True)
@@ -710,7 +779,8 @@ def save_failure(out: Path, cfg: Config, f: Failure) -> Path:
             lines.append(f"command: {' '.join(f.how['argv'])}"
                          f"{' < program' if f.how.get('stdin') else ''}")
             lines.append(f"environment: {f.how.get('env')}; exit {f.how.get('exit')}")
-        flag = {"time": "--time", "time-cli": "--time-cli"}.get(f.source, "--cli")
+        flag = {"time": "--time", "time-cli": "--time-cli", "engine": "--engine",
+                "lathe": "--lathe"}.get(f.source, "--cli")
         lines.append(f"rerun: python tests/fuzz/soak.py --seed {cfg.seed} --api 0 {flag} 1 "
                      f"--start {f.index} --out <dir>")
     lines += ["", f.detail]
@@ -722,7 +792,8 @@ def save_failure(out: Path, cfg: Config, f: Failure) -> Path:
 def summarize(cfg: Config, totals: Totals, elapsed: float, out: Path) -> int:
     api_n, cli_n = totals.done["api"], totals.done["cli"]
     rate = f"; API inputs run at {api_n / totals.api_seconds:.0f}/s per worker" if api_n else ""
-    timing = "".join(f", {totals.done[s]} {s} inputs" for s in TIME_SOURCES if totals.done[s])
+    timing = "".join(f", {totals.done[s]} {s} inputs" for s in (*TIME_SOURCES, *SURFACES)
+                     if totals.done[s])
     print(f"soak: seed {cfg.seed}, {api_n} API inputs, {cli_n} CLI runs{timing} in "
           f"{elapsed:.1f} s{rate}")
     print("outcomes:")
@@ -831,6 +902,12 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
                     help="ngc time inputs through the API, on random machines (default 0)")
     ap.add_argument("--time-cli", type=int, default=0,
                     help="ngc time runs on the command line, on random machines (default 0)")
+    ap.add_argument("--engine", type=int, default=0,
+                    help="engine-dialect programs with random setup sheets, through the API as "
+                    "canon and check run them (default 0)")
+    ap.add_argument("--lathe", type=int, default=0,
+                    help="lathe programs (generated and mutated) with their tool tables, checked, "
+                    "canon'd and timed on random lathes through the API (default 0)")
     ap.add_argument("--seed", type=int, default=1, help="seed (default 1)")
     ap.add_argument("--start", type=int, default=0,
                     help="number of the first input (default 0): --api 1 --start 17 runs input 17")
@@ -897,6 +974,10 @@ def main(argv: list[str] | None = None) -> int:
                   for i in range(first, time_end, TIME_CHUNK)]
     time_cli_tasks = [Task("time-cli", i, i + 1) for i in range(first, first + opts.time_cli)]
     tasks = interleave(interleave(api_tasks, cli_tasks), interleave(time_tasks, time_cli_tasks))
+    for source in SURFACES:
+        end = first + getattr(opts, source)
+        tasks = interleave(tasks, [Task(source, i, min(i + SURFACE_CHUNK, end))
+                                   for i in range(first, end, SURFACE_CHUNK)])
     progress = sys.stderr.isatty() and not opts.quiet
     start = time.monotonic()
     try:
