@@ -21,6 +21,10 @@ SQRT3_2 = math.sqrt(3.0) / 2.0
 # circles); a longer arc (a full circle) keeps the rules of the corner alone
 HALF_TURN = math.pi + 1e-9
 LONG_ARC_TURN = math.pi / 8.0  # under G64 P: measured on three quarters of a circle and a full one
+# a line into an arc that curves into the corner over more than this is not rounded where the blend
+# it aims for is too wide for the arc (measured: 122.5° rounded, 125° not, whatever the width)
+WIDE_BLEND_SWEEP = math.radians(123.75)
+SQRT3_4 = math.sqrt(3.0) / 4.0
 
 if TYPE_CHECKING:
     from .lookahead import Segment, Shape
@@ -102,6 +106,29 @@ def arc_blend_cap(prev: Segment, seg: Segment, theta: float, a: float, room: flo
         elif not at_end:
             cap = min(cap, math.sqrt(math.pi / (2.0 * math.sqrt(3.0)) * a * r))
     return cap
+
+
+def too_wide_for_arc(prev: Segment, seg: Segment, theta: float, goal: float, a: float) -> bool:
+    """Whether a line into an arc that curves into the corner (sweep φ from 123.75° to half a
+    turn, radius r) keeps a parabolic blend: the blend it aims for, the radius
+    R = min(v²/(√3/4·a), d/tan(θ/2)) (v the faster move's speed ``goal``, a the acceleration in the
+    corner's plane, d what the line may give: half its length), is wider than c·r, c = 8.68 at
+    180° to 9.52 at 135°, 0.84 more for each 45° less (measured at 90° on the XY axes of 200 mm/s
+    and 1000 mm/s², the line from rest: a half circle of r 0.6, 1 and 2 after lines of 20 to
+    40 mm rounded up to 46.9, 60.6 and 86.1 mm/s and not from 48.0, 62.1 and 88.2; r 1 from
+    62.1 and 63.5 at 160°, r 0.6 and 1 from 50.3 and 65.0 at 135°; a line of 16 mm rounded,
+    18 mm not, at 200 mm/s; a sweep of 122.5° rounded where R is 16.7·r, 125° not at 10·r)."""
+    if not isinstance(prev.shape, Line):
+        return False
+    for arc, at_end, same in arcs_at(prev, seg):
+        if at_end or not same or not WIDE_BLEND_SWEEP < arc.sweep <= HALF_TURN:
+            continue
+        d = min(0.5 * prev.full_length, prev.length)
+        wide = min(goal * goal / (SQRT3_4 * a), d / math.tan(0.5 * theta))
+        c = 8.68 + 0.84 * (math.pi - arc.sweep) / (0.25 * math.pi)
+        if wide > c * arc.radius:
+            return True
+    return False
 
 
 def arc_room(prev: Segment, seg: Segment, room: float) -> float:

@@ -26,6 +26,7 @@ from .arcjoin import (
     coplanar,
     helical,
     line_arc_fit,
+    too_wide_for_arc,
 )
 from .geometry import (
     Arc,
@@ -348,6 +349,8 @@ class Planner:
         if tolerance < 0.0 and lines:
             tolerance = 0.0  # before any G61/G64: beside an arc only
         if not lines:
+            if too_wide_for_arc(prev, seg, theta, goal, amax):
+                return None  # a parabolic blend
             room = arc_room(prev, seg, room)
             if tolerance != 0.0:  # (< 0: the tolerance before any G61/G64, for arcs only)
                 # a blend with an arc is drawn as a Corner: keep it within the tolerance
