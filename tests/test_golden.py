@@ -32,6 +32,10 @@ KNOWN: dict[str, str] = {
     "lathe-known-chamfer-moves-first-corner": "G7x: a chamfer at the end of a later move changes "
     "how rs274 rounds the profile's first outside corner and leaves the chamfer's own corner "
     "cut; the rule is not known yet (see also lathe-rough-pocket-g72-2-chamfer)",
+    "lathe-rough-closing-level": "G72 whose profile, moved by D, ends on the start's level: rs274 "
+    "closes it with a feed of no length here but not where the same moves end at X10 instead of "
+    "X12.56, nor with D0 (lathe-rough-g72-ends-on-level): its arithmetic leaves the moved end a "
+    "few units in the last place off the level, and ngc's does not",
     "nurbs-comp-on": "ngc refuses a G5.2 block while cutter compensation is on; rs274 runs it, "
     "dropping the move compensation holds, and offsets the next moves in a way not known yet",
 }

@@ -31,7 +31,8 @@ G72), and ``b``, the axis each pass cuts along.  What rs274 shows:
   enters each move and each arc rounding a corner with a feed (of no length) to its start and
   bridges a pocket by a feed across its top (entered so only from a corner's arc), and G7x.2
   cuts each pocket from its own top.  A last feed closes back to the start's level at E unless
-  E lies beyond it (G71: or on it).
+  E lies on it or beyond it (rs274's own arithmetic sometimes leaves a G72's moved E a few
+  units in the last place short of the level, and closes it with a feed of no length).
 * rs274 leaves out some of G7x.1's feeds of no length.  The cases found (a crossing of lines
   along X and Z, the ends of a chamfer or a fillet) suggest it feeds only where its arithmetic
   leaves the two points unequal; no rule is known, and ngc always feeds.
@@ -223,9 +224,8 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     p0a = fr.ab(first.x0, first.z0)[0]
     la, lb = fr.ab(last.x1, last.z1)
     closing = Seg(LINE, last.x1, last.z1, *fr.xz(sa, lb))
-    # a closing feed unless E lies beyond the start's level (G71: or on it; G72 closes from there,
-    # with a feed of no length)
-    closes = s * la >= s * sa if fr.swap else s * la > s * sa
+    # a closing feed unless E lies on the start's level or beyond it
+    closes = s * la > s * sa
     chain = [*moved, closing] if closes else list(moved)
     approach_line = Seg(LINE, start[0], start[1], first.x0, first.z0)
 
