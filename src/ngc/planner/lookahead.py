@@ -23,6 +23,7 @@ from .arcjoin import (
     arc_blend_cap,
     arc_room,
     arc_tolerance,
+    arcs_at,
     coplanar,
     helical,
     line_arc_fit,
@@ -357,9 +358,13 @@ class Planner:
                 return None  # a parabolic blend
             room = arc_room(prev, seg, room)
             if tolerance != 0.0:  # (< 0: the tolerance before any G61/G64, for arcs only)
-                # a blend with an arc is drawn as a Corner: keep it within the tolerance
-                room = min(room, corner_reach(theta, abs(tolerance),
-                                              min(radius_of(pl), radius_of(sl))))
+                # a blend with an arc is drawn as a Corner: keep it within the tolerance, with
+                # the curvature of an arc that curves into the corner (one that curves away bends
+                # away from the blend: a line, an arc of r 2 curving away from both 30° corners
+                # and a line under G64 P0.01 run their corners at 15.67 mm/s, as two lines)
+                bend = min((arc.radius for arc, _, same in arcs_at(prev, seg) if same),
+                           default=math.inf)
+                room = min(room, corner_reach(theta, abs(tolerance), bend))
                 tolerance = arc_tolerance(prev, seg, theta)
             tolerance = arc_away_tolerance(prev, seg, tolerance)
             goal = min(goal, arc_blend_cap(prev, seg, theta, amax, room))
