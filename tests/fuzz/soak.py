@@ -13,11 +13,13 @@ Inputs come from tests/fuzz/hostile.py (random bytes, token soup, mutated golden
 -g`` / ``canon`` / ``check`` (with ``--format json`` and the options each command offers, picked at
 random) in a fresh folder, with random tool tables, var and INI files next to the program.
 
-A failure is: an exception other than ``NgcError`` (API); exit 70, any other unexpected exit
-code, a traceback on stderr, JSON output that is not strict JSON in valid UTF-8 (CLI); a run over
-the time limit; a worker over the RSS limit; a file left behind where none may be written.
-Every failing input is saved to ``--out`` (up to ``--keep`` per class) with a text file that says
-what happened and how to replay it.  Exit status 1 if anything failed.
+A failure is: an exception other than ``NgcError`` (API); exit 70, any other unexpected exit code,
+a traceback on stderr, JSON output that is not strict JSON in valid UTF-8 (CLI); a run over the
+time limit (CPU time, user and system, so that a machine shared with other work does not make runs
+slow; a command line run is killed after 10 s of wall time too); a worker over the RSS limit; a
+file left behind where none may be written. Every failing input is saved to ``--out`` (up to
+``--keep`` per class) with a text file that says what happened and how to replay it. Exit status 1
+if anything failed.
 
 ``--time N`` and ``--time-cli N`` soak ``ngc time`` (tests/fuzz/timed.py): each input is a random
 legal machine (a TOML file, an INI file or both, values at the ends of their ranges, axes left
@@ -196,11 +198,11 @@ def api_run(data: bytes, decoding: str, feed: str, max_iterations: int,
             time_limit: float) -> tuple[str, float, str, str]:
     """Run one program in this process: (outcome, seconds, failure class or "", detail)."""
     text = hostile.decode(data, decoding)
-    start = time.perf_counter()
+    start = cpu_seconds()
     klass = detail = ""
     outcome = "ok"
     try:
-        with hostile.time_limit(time_limit):
+        with hostile.time_limit(time_limit, cpu=True):
             hostile.run_api(text, feed=feed, max_iterations=max_iterations)
     except NgcError as exc:
         outcome, detail = "NgcError", exc.message
@@ -208,7 +210,7 @@ def api_run(data: bytes, decoding: str, feed: str, max_iterations: int,
         klass = f"over {time_limit:g} s"
     except Exception as exc:
         klass, detail = hostile.failure_class(exc), traceback.format_exc()
-    seconds = time.perf_counter() - start
+    seconds = cpu_seconds() - start
     klass, detail = _swept(klass, detail)
     return ("fail" if klass else outcome), seconds, klass, detail
 
@@ -266,11 +268,11 @@ def time_api_run(data: bytes, files: dict[str, Path], rng: random.Random, cfg: C
                  ) -> tuple[str, float, str, str]:
     """(outcome, seconds, failure class or "", detail) of one program timed through the API."""
     text = hostile.decode(data, "utf-8")
-    start = time.perf_counter()
+    start = cpu_seconds()
     klass = detail = ""
     outcome = "ok"
     try:
-        with hostile.time_limit(cfg.time_limit):
+        with hostile.time_limit(cfg.time_limit, cpu=True):
             outcome = timed.run_api(text, files, rng, cfg.max_iterations)
     except NgcError as exc:
         outcome, detail = "NgcError", exc.render()
@@ -280,7 +282,7 @@ def time_api_run(data: bytes, files: dict[str, Path], rng: random.Random, cfg: C
         klass = f"over {cfg.time_limit:g} s"
     except Exception as exc:
         klass, detail = hostile.failure_class(exc), traceback.format_exc()
-    seconds = time.perf_counter() - start
+    seconds = cpu_seconds() - start
     klass, detail = _swept(klass, detail)
     return ("fail" if klass else outcome), seconds, klass, detail
 
@@ -294,10 +296,10 @@ def surface_input(cfg: Config, source: str, index: int, result: TaskResult,
     folder = base / f"{source}-{index}"
     folder.mkdir()
     configs: dict[str, bytes] = {}
-    start = time.perf_counter()
+    start = cpu_seconds()
     klass = detail = ""
     try:
-        with hostile.time_limit(cfg.time_limit):
+        with hostile.time_limit(cfg.time_limit, cpu=True):
             outcome = module.soak_run(rng, data, folder, cfg.max_iterations, configs)
     except NgcError as exc:
         outcome, detail = "NgcError", exc.render()
@@ -309,7 +311,7 @@ def surface_input(cfg: Config, source: str, index: int, result: TaskResult,
         klass, detail = hostile.failure_class(exc), traceback.format_exc()
     finally:
         shutil.rmtree(folder, ignore_errors=True)
-    seconds = time.perf_counter() - start
+    seconds = cpu_seconds() - start
     klass, detail = _swept(klass, detail)
     outcome = "fail" if klass else outcome
     how = {"configs": configs}
@@ -447,22 +449,39 @@ def strings(value: Any) -> Iterator[str]:
 
 
 def run_bounded(argv: list[str], work: Path, env: dict[str, str], stdin: Path | None,
-                out: Path, err: Path) -> int:
-    """Run a command with its output in files; kill it past ``CLI_TIMEOUT_S`` (returns
-    ``KILLED_TIME``) or ``OUTPUT_LIMIT`` bytes of output (``KILLED_OUTPUT``)."""
+                out: Path, err: Path) -> tuple[int, float]:
+    """Run a command with its output in files; kill it past ``CLI_TIMEOUT_S`` of wall time
+    (exit ``KILLED_TIME``) or ``OUTPUT_LIMIT`` bytes of output (``KILLED_OUTPUT``).  Returns the
+    exit code and the CPU seconds (user and system) the command took."""
+    before = children_cpu_seconds()
     with (open(stdin or os.devnull, "rb") as fin, out.open("wb") as fout,
           err.open("wb") as ferr):
         proc = subprocess.Popen(argv, cwd=work, env=env, stdin=fin, stdout=fout, stderr=ferr)
         deadline = time.monotonic() + CLI_TIMEOUT_S
         while True:
             try:
-                return proc.wait(timeout=0.05)
+                rc = proc.wait(timeout=0.05)
+                break
             except subprocess.TimeoutExpired:
                 big = os.fstat(fout.fileno()).st_size + os.fstat(ferr.fileno()).st_size
                 if time.monotonic() > deadline or big > OUTPUT_LIMIT:
                     proc.kill()
                     proc.wait()
-                    return KILLED_OUTPUT if big > OUTPUT_LIMIT else KILLED_TIME
+                    rc = KILLED_OUTPUT if big > OUTPUT_LIMIT else KILLED_TIME
+                    break
+    return rc, children_cpu_seconds() - before
+
+
+def cpu_seconds() -> float:
+    """This process's CPU time (user and system), s."""
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_utime + usage.ru_stime
+
+
+def children_cpu_seconds() -> float:
+    """The CPU time (user and system) of the finished child processes, s."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
 
 
 def read_bounded(path: Path, limit: int = 256 * 1024) -> bytes:
@@ -489,10 +508,8 @@ def cli_input(cfg: Config, index: int, result: TaskResult, base: Path) -> None:
             stdin_file.write_bytes(stdin)
         env = cli_env(rng, home)
         before = set(os.listdir(work))
-        start = time.perf_counter()
-        rc = run_bounded([*cfg.python, "-m", "ngc", *argv], work, env,
-                         stdin_file if stdin is not None else None, out, err)
-        seconds = time.perf_counter() - start
+        rc, seconds = run_bounded([*cfg.python, "-m", "ngc", *argv], work, env,
+                                  stdin_file if stdin is not None else None, out, err)
         extra = sorted(set(os.listdir(work)) - before)
         configs = {f: (work / f).read_bytes() for f in ("tools.tbl", "vars.var", "x.ini")
                    if f in before}
@@ -529,9 +546,7 @@ def time_cli_input(cfg: Config, index: int, result: TaskResult, base: Path) -> N
         argv = [*args, "prog.ngc"]
         (work / "prog.ngc").write_bytes(data)
         env = cli_env(rng, home)
-        start = time.perf_counter()
-        rc = run_bounded([*cfg.python, "-m", "ngc", *argv], work, env, None, out, err)
-        seconds = time.perf_counter() - start
+        rc, seconds = run_bounded([*cfg.python, "-m", "ngc", *argv], work, env, None, out, err)
         errors = read_bounded(err)
         klass = cli_verdict(cfg, "time", "json" if fmt_json else "text", rc, out, errors,
                             seconds, [p.name for p in work.iterdir()])
@@ -647,6 +662,7 @@ class Totals:
     child_rss_kb: int = 0
     done: Counter[str] = field(default_factory=Counter)
     api_seconds: float = 0.0
+    interrupted: bool = False  # stopped by Ctrl-C or SIGTERM: the counts are of finished tasks
 
     def add(self, r: TaskResult, cfg: Config) -> None:
         self.counts.update(r.counts)
@@ -680,28 +696,11 @@ def run_campaign(cfg: Config, tasks: list[Task], jobs: int, progress: bool) -> T
     pending = deque(tasks)
     workers = [start_worker(ctx, cfg) for _ in range(max(1, jobs))]
     total = Counter({s: sum(t.stop - t.start for t in tasks if t.source == s) for s in SOURCES})
-    started, shown = time.monotonic(), 0.0
+    started = time.monotonic()
     try:
-        while pending or any(w.task for w in workers):
-            for w in workers:
-                if w.task is None and pending:
-                    w.task = pending.popleft()
-                    w.conn.send(w.task)
-            busy = [w for w in workers if w.task is not None]
-            ready = wait([w.conn for w in busy], timeout=0.25)
-            for i, w in enumerate(workers):
-                if w.conn in ready or w.task is None:
-                    if w.conn in ready:
-                        workers[i] = collect(ctx, cfg, w, totals, pending)
-                    continue
-                limit = cfg.time_limit if w.task.source in IN_WORKER else CLI_TIMEOUT_S
-                if w.status[0] >= 0 and time.monotonic() - w.status[1] > limit + GRACE_S:
-                    w.process.kill()
-                    w.process.join()
-                    workers[i] = requeue(ctx, cfg, w, totals, pending, "stuck (killed)")
-            if progress and time.monotonic() - shown > 0.5:
-                shown = time.monotonic()
-                show_progress(totals, total, shown - started)
+        run_tasks(cfg, ctx, workers, pending, totals, total, started, progress)
+    except KeyboardInterrupt:
+        totals.interrupted = True
     finally:
         for w in workers:
             with contextlib.suppress(OSError, BrokenPipeError):
@@ -714,6 +713,32 @@ def run_campaign(cfg: Config, tasks: list[Task], jobs: int, progress: bool) -> T
             show_progress(totals, total, time.monotonic() - started)
             print(file=sys.stderr)
     return totals
+
+
+def run_tasks(cfg: Config, ctx: Any, workers: list[Worker], pending: deque[Task], totals: Totals,
+              total: Counter[str], started: float, progress: bool) -> None:
+    """Hand out tasks and collect their results until none is left."""
+    shown = 0.0
+    while pending or any(w.task for w in workers):
+        for w in workers:
+            if w.task is None and pending:
+                w.task = pending.popleft()
+                w.conn.send(w.task)
+        busy = [w for w in workers if w.task is not None]
+        ready = wait([w.conn for w in busy], timeout=0.25)
+        for i, w in enumerate(workers):
+            if w.conn in ready or w.task is None:
+                if w.conn in ready:
+                    workers[i] = collect(ctx, cfg, w, totals, pending)
+                continue
+            limit = cfg.time_limit if w.task.source in IN_WORKER else CLI_TIMEOUT_S
+            if w.status[0] >= 0 and time.monotonic() - w.status[1] > limit + GRACE_S:
+                w.process.kill()
+                w.process.join()
+                workers[i] = requeue(ctx, cfg, w, totals, pending, "stuck (killed)")
+        if progress and time.monotonic() - shown > 0.5:
+            shown = time.monotonic()
+            show_progress(totals, total, shown - started)
 
 
 def collect(ctx: Any, cfg: Config, w: Worker, totals: Totals, pending: deque[Task]) -> Worker:
@@ -917,7 +942,8 @@ def parse_args(argv: list[str] | None) -> argparse.Namespace:
     ap.add_argument("--max-iterations", type=int, default=hostile.MAX_ITERATIONS,
                     help=f"the API runs' loop budget (default {hostile.MAX_ITERATIONS})")
     ap.add_argument("--time-limit", type=float, default=2.0,
-                    help="seconds an input may take (default 2)")
+                    help="CPU seconds an input may take (default 2; a busy machine does not "
+                    "make an input slow)")
     ap.add_argument("--rss-limit-mb", type=float, default=100.0,
                     help="a worker's peak RSS over this is a failure (default 100)")
     ap.add_argument("--mem-limit-mb", type=int, default=1024,
@@ -980,12 +1006,18 @@ def main(argv: list[str] | None = None) -> int:
                                    for i in range(first, end, SURFACE_CHUNK)])
     progress = sys.stderr.isatty() and not opts.quiet
     start = time.monotonic()
-    try:
-        totals = run_campaign(cfg, tasks, opts.jobs, progress)
-    except KeyboardInterrupt:
-        print("\nsoak: interrupted", file=sys.stderr)
+    signal.signal(signal.SIGTERM, _interrupt)  # (workers, forked, stop on their own pipe)
+    totals = run_campaign(cfg, tasks, opts.jobs, progress)
+    code = summarize(cfg, totals, time.monotonic() - start, opts.out)
+    if totals.interrupted:
+        print("soak: interrupted; the figures above are of the inputs run to then", file=sys.stderr)
         return 130
-    return summarize(cfg, totals, time.monotonic() - start, opts.out)
+    return code
+
+
+def _interrupt(signum: int, frame: Any) -> None:
+    """SIGTERM as Ctrl-C: the run stops and sums up what it has done."""
+    raise KeyboardInterrupt
 
 
 if __name__ == "__main__":
