@@ -441,7 +441,11 @@ def _corner(m: Machine, c: Compensation, tangent: float, turn: float, sa: float,
             check_held(c)
         # the held move ends at the compensated point, which a lathe cycle's profile may have
         # moved from where the move was held to (see ``lathe._move_to``)
-        move_held_end(m, c, c.ca, c.cb)
+        if c.kind != 0:
+            end = c.item[1]
+            ia, ib = (0, 1) if c.kind == ARC else (c.a, c.b)
+            if end[ia] != c.ca + c.shift_a or end[ib] != c.cb + c.shift_b:
+                move_held_end(m, c, c.ca, c.cb)
         flush(m)
         if refusal:
             raise NgcSemanticError(refusal)
