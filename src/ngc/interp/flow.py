@@ -514,7 +514,9 @@ class Flow:
             if isinstance(entry, str):
                 if it.percent and body is self.tape and entry.strip() == "%":
                     it._finish_percent()
-                    prefix = "O#" if mode == BRANCH else "O"
+                    # rs274 names a control label after the subroutine it is in: 'Osub#label'.
+                    scope = f.sub.name if f.sub is not None else ""
+                    prefix = f"O{scope}#" if mode == BRANCH else "O"
                     raise NgcProgramError(f"Failed to find sub '{prefix}{label}' before EOF",
                                           file=body.file, line=number, source=entry.rstrip(C_SPACE))
                 if it.machine.state.blocks_deleted and entry.lstrip(" \t").startswith("/"):
