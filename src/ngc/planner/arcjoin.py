@@ -175,8 +175,17 @@ def arc_tolerance(prev: Segment, seg: Segment, theta: float) -> float:
     return tolerance * (c1 / (1.0 - c1)) / (c0 / (1.0 - c0))
 
 
+def least_radius(theta: float, speed: float, normal: float, cycles: float) -> float:
+    """The smallest radius a blend beside an arc that curves into the corner is given: the one
+    that lets ``speed`` through (centripetal acceleration ``normal``), but no smaller than keeps
+    the blend, turning by about ``theta``, ``cycles`` seconds long at that speed (two servo
+    periods: a shorter blend would be slowed down to last them; LinuxCNC passes the joins of a G5
+    curve's arcs and chords, 0.5° to 1.7°, at the feed)."""
+    return max(speed * speed / normal, cycles * speed / max(theta, 1e-9))
+
+
 def line_arc_fit(prev: Segment, seg: Segment, theta: float, radius: float, room: float,
-                 speed: float, normal: float) -> tuple[float, float, float] | None:
+                 speed: float, normal: float, cycles: float) -> tuple[float, float, float] | None:
     """How much a blend circle of ``radius`` tangent to both a line and an arc (in one plane)
     takes from ``prev`` and from ``seg``, and its length; the radius shrinks until neither
     gives more than ``room``."""
@@ -185,7 +194,7 @@ def line_arc_fit(prev: Segment, seg: Segment, theta: float, radius: float, room:
         return None
     arc, arc_first, same = side
     if same:  # the radius that lets the speed through, no longer
-        radius = min(radius, speed * speed / normal)
+        radius = min(radius, least_radius(theta, speed, normal, cycles))
     r = arc.radius
     sin_t, cos_t = math.sin(theta), math.cos(theta)
     # the line runs along +x into the join at the origin, the arc leaves it turning left by
@@ -213,7 +222,7 @@ def line_arc_fit(prev: Segment, seg: Segment, theta: float, radius: float, room:
 
 
 def arc_arc_fit(prev: Segment, seg: Segment, theta: float, radius: float, room: float,
-                speed: float, normal: float) -> tuple[float, float, float] | None:
+                speed: float, normal: float, cycles: float) -> tuple[float, float, float] | None:
     """As :func:`line_arc_fit`, for two arcs in one plane."""
     a1 = prev.shape.base if isinstance(prev.shape, Piece) else prev.shape
     a2 = seg.shape.base if isinstance(seg.shape, Piece) else seg.shape
@@ -239,7 +248,7 @@ def arc_arc_fit(prev: Segment, seg: Segment, theta: float, radius: float, room: 
     same1 = c1[1] > 0.0  # curves into the corner
     same2 = -st * c2[0] + ct * c2[1] > 0.0
     if same1 or same2:
-        radius = min(radius, speed * speed / normal)
+        radius = min(radius, least_radius(theta, speed, normal, cycles))
     big = radius
     for _ in range(40):
         d1 = r1 - big if same1 else r1 + big

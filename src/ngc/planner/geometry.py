@@ -318,6 +318,73 @@ def nurbs_point(points: Sequence[tuple[float, float]], weights: Sequence[float],
     return (x / w, y / w) if w != 0.0 else (x, y)
 
 
+def cubic_biarcs(points: Sequence[tuple[float, float]], pieces: int
+                 ) -> list[tuple[tuple[float, float], tuple[float, float] | None, int]]:
+    """The arcs that run the cubic Bézier curve of ``points`` (a G5) as LinuxCNC runs it: the
+    curve cut at ``pieces`` equal steps of its parameter, each piece a biarc from its start to its
+    end with the curve's tangents there, the two arcs meeting where their tangent lengths are
+    equal (the joint halfway between the start pushed forward and the end pushed back along the
+    tangents by that length).  Each arc as (end, centre, +1 counterclockwise / -1 clockwise); a
+    piece with no bend, or whose tangents leave no such joint, as (end, None, 0), a line.
+
+    Measured under G61.1, where each arc ends with a stop: a G5 from (5, 0) to (25, 3) stopped at
+    the curve's points of parameter k/16 and at the joints of this rule, within 1e-5 mm."""
+    (ax, ay), (bx, by), (cx, cy), (dx, dy) = points[0], points[1], points[2], points[3]
+
+    def point(u: float) -> tuple[float, float]:
+        m = 1.0 - u
+        k0, k1, k2, k3 = m * m * m, 3.0 * m * m * u, 3.0 * m * u * u, u * u * u
+        return (k0 * ax + k1 * bx + k2 * cx + k3 * dx, k0 * ay + k1 * by + k2 * cy + k3 * dy)
+
+    def tangent(u: float, p: tuple[float, float], q: tuple[float, float]) -> tuple[float, float]:
+        m = 1.0 - u
+        tx = 3.0 * (m * m * (bx - ax) + 2.0 * m * u * (cx - bx) + u * u * (dx - cx))
+        ty = 3.0 * (m * m * (by - ay) + 2.0 * m * u * (cy - by) + u * u * (dy - cy))
+        n = math.hypot(tx, ty)
+        if n < 1e-12:  # no tangent there (a control point on the end): the chord's way
+            tx, ty = q[0] - p[0], q[1] - p[1]
+            n = math.hypot(tx, ty)
+            if n < 1e-12:
+                return (0.0, 0.0)
+        return (tx / n, ty / n)
+
+    out: list[tuple[tuple[float, float], tuple[float, float] | None, int]] = []
+    p0 = point(0.0)
+    for k in range(pieces):
+        u0, u1 = k / pieces, (k + 1) / pieces
+        p1 = point(u1)
+        t0, t1 = tangent(u0, p0, p1), tangent(u1, p0, p1)
+        vx, vy = p1[0] - p0[0], p1[1] - p0[1]
+        sx, sy = t0[0] + t1[0], t0[1] + t1[1]
+        vt, vv, a = vx * sx + vy * sy, vx * vx + vy * vy, sx * sx + sy * sy - 4.0
+        if abs(a) < 1e-12:
+            d = vv / (4.0 * vt) if vt > 0.0 else -1.0
+        else:
+            disc = vt * vt - a * vv
+            d = (vt - math.sqrt(disc)) / a if disc >= 0.0 else -1.0
+        if not d > 0.0 or vv < 1e-24:
+            out.append((p1, None, 0))
+            p0 = p1
+            continue
+        q0 = (p0[0] + d * t0[0], p0[1] + d * t0[1])
+        q1 = (p1[0] - d * t1[0], p1[1] - d * t1[1])
+        joint = (0.5 * (q0[0] + q1[0]), 0.5 * (q0[1] + q1[1]))
+        tj = (q1[0] - q0[0], q1[1] - q0[1])
+        n = math.hypot(tj[0], tj[1])
+        tj = (tj[0] / n, tj[1] / n) if n > 1e-12 else t0
+        for start, t, end in ((p0, t0, joint), (joint, tj, p1)):
+            wx, wy = end[0] - start[0], end[1] - start[1]
+            side = wx * -t[1] + wy * t[0]  # along the left normal of the tangent
+            ww = wx * wx + wy * wy
+            if abs(side) <= 1e-9 * ww or ww < 1e-24:
+                out.append((end, None, 0))
+                continue
+            r = ww / (2.0 * side)  # > 0: the centre on the left, counterclockwise
+            out.append((end, (start[0] - t[1] * r, start[1] + t[0] * r), 1 if r > 0.0 else -1))
+        p0 = p1
+    return out
+
+
 def nurbs_polyline(points: Sequence[tuple[float, float]], weights: Sequence[float],
                    knots: Sequence[float], order: int,
                    tolerance: float) -> list[tuple[float, float]]:

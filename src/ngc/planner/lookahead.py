@@ -390,10 +390,10 @@ class Planner:
                 # a circle tangent to the line or arc on each side
                 if isinstance(pl, Line) or isinstance(sl, Line):
                     fit = line_arc_fit(prev, seg, theta, b.radius, room, b.speed,
-                                       SQRT3_2 * amax)
+                                       SQRT3_2 * amax, 2.0 * self.period)
                 else:
                     fit = arc_arc_fit(prev, seg, theta, b.radius, room, b.speed,
-                                      SQRT3_2 * amax)
+                                      SQRT3_2 * amax, 2.0 * self.period)
             if fit is not None:
                 d0, d1, length = fit
             prev.shape = _trimmed(pl, 0.0, pl.length - d0)

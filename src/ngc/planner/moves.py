@@ -20,13 +20,15 @@ from typing import Any
 
 from ..canon import ops
 from ..errors import NgcError
-from .geometry import Line, Pos, arc_from_canon, nurbs_polyline
+from .geometry import Line, Pos, Vec, arc_from_canon, cubic_biarcs, nurbs_polyline
 from .lookahead import ARC, EXACT, FEED, PARABOLIC, RAPID, SQRT3_2, STOP, Planner, Segment
 from .machine import MAX_COORDINATE, Machine
 
 MM_PER_INCH = 25.4
 INITIAL_ARC_TOLERANCE_INCH = 0.001  # inch: the corner tolerance for arcs before any G61/G64
 NURBS_TOLERANCE = 0.001  # machine units: how close the lines that run a NURBS curve stay to it
+# a G5 curve runs as this many biarcs, uniform in its parameter (LinuxCNC's, measured)
+G5_PIECES = 16
 
 _new = tuple.__new__  # a NamedTuple made without its Python __new__
 AXES6 = "XYZABC"
@@ -419,14 +421,19 @@ class PathSink:
         if self.rot:  # the XY rotation turns the normal of an XZ or YZ arc with the plane
             normal[0], normal[1] = (normal[0] * self.cos_r - normal[1] * self.sin_r,
                                     normal[0] * self.sin_r + normal[1] * self.cos_r)
+        self.arc_to(end, c, (normal[0], normal[1], normal[2]), op.rotation, line)
+
+    def arc_to(self, end: Pos, c: Pos, normal: Vec, turns: int, line: int) -> None:
+        """An arc from the current position to ``end`` about ``c`` (machine coordinates) in the
+        plane of ``normal``, ``turns`` as ARC_FEED's rotation."""
+        p1, p2, pn = self.plane
         start = self.pos
         self.check(end, line)
         within(c, line)
         for i in (p1, p2):  # an arc turns both axes of its plane
             if i in self.missing and (c[p1], c[p2]) != (start[p1], start[p2]):
                 raise MissingAxis(AXES6[i], tuple(self.machine.axes), line)
-        shape = arc_from_canon(start, end, (c[0], c[1], c[2]),
-                               (normal[0], normal[1], normal[2]), op.rotation)
+        shape = arc_from_canon(start, end, (c[0], c[1], c[2]), normal, turns)
         if (self.mode == PARABOLIC and self.naive_tol > 0.0 and self.plane == (0, 1, 2)
                 and abs(shape.rise) < 1e-12 and shape.sweep < math.pi
                 and shape.radius * (1.0 - math.cos(0.5 * shape.sweep)) < self.naive_tol):
@@ -501,9 +508,22 @@ class PathSink:
         self.planner.add(seg)
 
     def nurbs(self, op: ops.NurbsFeed, line: int) -> None:
-        """G5, G5.1, G5.2: the curve in the XY plane run as straight feeds within NURBS_TOLERANCE
-        of it (a chain of short lines, joined as any other)."""
+        """G5: the cubic curve run as LinuxCNC runs it, as G5_PIECES biarcs (see
+        :func:`~ngc.planner.geometry.cubic_biarcs`), each arc as an ARC_FEED of its own (naive CAM
+        included); G5.1 and G5.2: the curve in the XY plane run as straight feeds within
+        NURBS_TOLERANCE of it (a chain of short lines, joined as any other)."""
         z, abc = self.pos[2], self.pos[3:]
+        if op.order == 4 and op.size == 4 and all(w == 1.0 for w in op.weights):
+            for end, centre, turns in cubic_biarcs(op.points, G5_PIECES):
+                e = self.to_machine((end[0], end[1], 0.0, 0.0, 0.0, 0.0))
+                e = (e[0], e[1], z, abc[0], abc[1], abc[2])
+                if centre is None:
+                    self.straight(e, line, True)
+                    continue
+                c = self.to_machine((centre[0], centre[1], 0.0, 0.0, 0.0, 0.0))
+                self.arc_to(e, (c[0], c[1], z, abc[0], abc[1], abc[2]), (0.0, 0.0, 1.0), turns,
+                            line)
+            return
         for x, y in nurbs_polyline(op.points, op.weights, op.knots, op.order, NURBS_TOLERANCE):
             p = self.to_machine((x, y, 0.0, 0.0, 0.0, 0.0))
             self.straight((p[0], p[1], z, abc[0], abc[1], abc[2]), line, True)
