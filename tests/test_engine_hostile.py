@@ -116,3 +116,16 @@ def test_segments_are_made_as_they_are_taken() -> None:
     assert taken == 20_000
     assert time.monotonic() - started < 20.0
     assert peak < 2_000_000
+
+
+@pytest.mark.parametrize("text", [
+    "S" + "3" * 400 + " M3",  # a number past a float: SPINDLE_SPEED was inf
+    "F1\nG1 X" + "9" * 400,
+    "dwell [" + "9" * 400 + "]",
+    "F[10**400]",
+    "#1 = [10**400]",
+])
+def test_a_value_past_a_float_is_an_error(text: str) -> None:
+    with pytest.raises(NgcError, match="Calculation resulted in 'infinity'") as info:
+        ops(text, 1000)
+    assert info.value.line == text.count("\n") + 1

@@ -53,7 +53,8 @@ def tokens(text: str) -> list[str]:
 
 
 def value(token: str, params: Params) -> float:
-    """An expression's value."""
+    """An expression's value: a finite number (infinity or NaN, as a number of 400 digits or
+    ``[10**400]`` gives, is rs274's error for a value it reads)."""
     text = re.sub(r"\s+", "", token.lower())
     try:
         parsed = read_value(text)
@@ -65,7 +66,7 @@ def value(token: str, params: Params) -> float:
         raise
     except Exception as exc:  # (a token the reader cannot take)
         raise NgcSyntaxError(f"Bad expression '{token}'") from exc
-    return ex.evaluate(parsed, params)
+    return ex.finite(ex.evaluate(parsed, params))
 
 
 def reference(token: str) -> str | None:
