@@ -625,7 +625,7 @@ def spoil(text: str, rng: random.Random) -> str:
               (["M2"], ["M30"], ["M02"]))
     kinds = ["relabel_end", "drop_end", "break_outside", "undefined", "return_main", "nested_sub",
              "elseif_after_else", "continue_if", "call_before", "no_endsub", "repeat_dup",
-             "endwhile_do", "stray_else"]
+             "endwhile_do", "stray_else", "break_to_caller", "redefine", "many_args"]
     for _ in range(20):
         kind = rng.choice(kinds)
         if kind == "relabel_end":
@@ -699,6 +699,25 @@ def spoil(text: str, rng: random.Random) -> str:
                 if j is not None:
                     lines[j] = f"{lab} endwhile"
                     break
+        elif kind == "break_to_caller":
+            loops = _o_lines(lines, "while") + _o_lines(lines, "do")
+            subs = _o_lines(lines, "sub")
+            if loops and subs:
+                lab = lines[rng.choice(loops)].strip().split()[0]
+                lines.insert(subs[0] + 1, f"{lab} {rng.choice(['break', 'continue'])}")
+                break
+        elif kind == "redefine":
+            subs = _o_lines(lines, "sub")
+            if subs:
+                lab = lines[rng.choice(subs)].strip().split()[0]
+                lines[end:end] = [f"{lab} sub", "(debug, again)", f"{lab} endsub"]
+                break
+        elif kind == "many_args":
+            calls = _o_lines(lines, "call")
+            if calls:
+                i = rng.choice(calls)
+                lines[i] += "".join(f" [{k}]" for k in range(rng.choice([29, 30, 31])))
+                break
         elif kind == "stray_else":
             lines.insert(rng.randint(1, end), rng.choice(["o55 else", "o55 endif", "o55 endwhile"]))
             break

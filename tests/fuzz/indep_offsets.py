@@ -49,6 +49,9 @@ class Offsets:
         self.inch = True
         self.wrong = r.random() < WRONG_SHARE
         self.turns = 0
+        # how far from the origin the work sits, and how many values are ties at the 4th decimal
+        self.reach = r.choice([1.0, 1.0, 1.0, 8.0, 40.0])
+        self.ties = r.choice([0.2, 0.45, 0.45, 0.9])
 
     # -- writing --
     def emit(self, *words: str) -> None:
@@ -69,13 +72,14 @@ class Offsets:
         return self.w("G", code[1:])
 
     # -- numbers --
-    def val(self, span: float, ties: float = 0.45) -> str:
+    def val(self, span: float, ties: float | None = None) -> str:
         """A CAM-style number: 4 or 5 decimals, often an exact tie at the fourth."""
         r = self.rng
+        ties = self.ties if ties is None else ties
         places = 5 if r.random() < 0.6 else 4
         if self.inch is False:
             places = r.choice([3, 4])
-        v = r.uniform(-span, span)
+        v = r.uniform(-span, span) * (self.reach if span > 1.5 else 1.0)
         if places == 5 and r.random() < ties:
             v = (math.floor(v * 10000) + 0.5) / 10000
         text = f"{v:.{places}f}"
@@ -99,7 +103,8 @@ class Offsets:
         r = self.rng
         table: list[tuple[float, Callable[[], None]]] = [
             (4, self.g10_l2), (3, self.g10_l20), (2.5, self.g52), (3, self.g92),
-            (2.5, self.select), (0.8, self.units), (1.2, self.show), (0.6, self.rotated_pattern),
+            (2.5, self.select), (1.2, self.units), (1.2, self.show), (0.6, self.rotated_pattern),
+            (0.8, self.incremental),
         ]
         total = sum(wt for wt, _ in table)
         x = r.uniform(0, total)
@@ -149,16 +154,32 @@ class Offsets:
         else:
             self.emit(self.g(kind))
 
+    def incremental(self) -> None:
+        """A stretch in G91: moves relative, an offset set in between (G91 leaves G10 alone)."""
+        r = self.rng
+        self.emit(self.g("G91"))
+        self.emit(self.g(r.choice(["G0", "G1"])), *self.axes(1.0, "XYZ"))
+        r.choice([self.g10_l2, self.g10_l20, self.g52, self.g92])()
+        self.emit(self.g("G1"), *self.axes(1.0, "XYZ"))
+        self.emit(self.g("G90"))
+
     def select(self) -> None:
         self.emit(self.g(self.rng.choice(SYSTEMS)))
 
     def units(self) -> None:
         """A stretch in millimetres, then back to inches."""
+        r = self.rng
         self.emit(self.g("G21"))
         self.inch = False
-        self.cut(self.rng.randint(1, 3), scale=25.4)
+        self.cut(r.randint(1, 3), scale=25.4)
+        if r.random() < 0.6:
+            # offsets set in millimetres, then shown and used in inches
+            r.choice([self.g10_l2, self.g10_l20, self.g52, self.g92])()
+            self.cut(1, scale=25.4)
         self.inch = True
         self.emit(self.g("G20"))
+        if r.random() < 0.4:
+            self.show()
 
     def show(self) -> None:
         r = self.rng

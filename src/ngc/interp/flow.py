@@ -252,7 +252,8 @@ class Frame:
 
 
 class _Skimming:
-    """Parameters as a skip reads them: an undefined named parameter reads 0 (rs274)."""
+    """Parameters as a definition passed over reads them: an undefined named parameter reads 0
+    (rs274)."""
 
     __slots__ = ("params",)
 
@@ -493,7 +494,9 @@ class Flow:
         broke = False  # a break line of the label passed
         computed = False  # a computed label was passed over: the skip may end otherwise next time
         params = it.machine.params
-        context = params if mode == BRANCH else _Skimming(params)
+        # A search for a subroutine reads the labels it passes as a branch does (an undefined
+        # name is an error, even in the body of another subroutine); a definition reads it as 0.
+        context = _Skimming(params) if mode == DEFINE else params
         number = start
         while True:
             number += 1
@@ -544,7 +547,7 @@ class Flow:
                         continue
             try:
                 # rs274 computes the label of every o-word it passes over (o[1/0] is an error
-                # there too); a definition or a search reads undefined names as 0.
+                # there too); a definition passed over reads undefined names as 0.
                 computed = computed or ow.label is None
                 passed = ow.label_of(context)
                 if mode == DEFINE:
