@@ -31,9 +31,9 @@ def _unbounded() -> None:
 class Machine:
     """State, parameters, the sink, and the files a program opens (logs)."""
 
-    __slots__ = ("comp", "contexts", "encoding", "ended", "held", "label", "line", "log", "move",
-                 "params", "probe", "probe_log", "profile", "run_profile", "run_text", "sink",
-                 "state", "work", "write_files")
+    __slots__ = ("comp", "contexts", "encoding", "ended", "held", "label", "line", "log",
+                 "message", "move", "params", "probe", "probe_log", "profile", "run_profile",
+                 "run_text", "sink", "state", "work", "write_files")
 
     def __init__(self, sink: Sink, write_files: bool = True) -> None:
         self.sink = sink
@@ -45,6 +45,8 @@ class Machine:
         self.label = "N..... "  # the running block's N column
         self.line = 0  # the running block's source line
         self.ended = False  # M2 / M30 ran
+        # The line and text of the last (DEBUG,...) or (PRINT,...) shown (handlers/program.py).
+        self.message: tuple[int, str] = (-1, "")
         # The file of (LOGOPEN,...) / (LOGAPPEND,...), until (LOGCLOSE) or the end of the run.
         self.log: TextIO | None = None
         # The file of (PROBEOPEN ...), until (PROBECLOSE) or the end of the run.

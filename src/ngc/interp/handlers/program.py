@@ -58,11 +58,30 @@ def _msg(it: Machine, rest: str) -> None:
 
 def _debug(it: Machine, rest: str) -> None:
     if it.params.numbered[DEBUG_ENABLE] != 0.0:
-        it.emit(ops.Message(substitute(it, rest)))
+        it.emit(ops.Message(_shown_text(it, rest)))
 
 
 def _print(it: Machine, rest: str) -> None:
-    it.sink.print_text(substitute(it, rest))
+    it.sink.print_text(_shown_text(it, rest))
+
+
+def _shown_text(it: Machine, rest: str) -> str:
+    """The text of a DEBUG or PRINT comment as rs274 shows it.
+
+    rs274 builds both in one buffer and ends the text there, except after a ``#`` that is the
+    comment's last character: that ``#`` is not shown, and the text runs on into what the buffer
+    held.  Right after another DEBUG or PRINT line that is the rest of its text (``(debug,
+    abcdef)`` then ``(print, x#)`` prints `` xbcdef``); after other lines rs274 shows what was
+    left in its memory, often nothing, sometimes stray bytes, which is not modelled: the text
+    ends there."""
+    text = substitute(it, rest)
+    if rest.endswith("#"):
+        text = text[:-1]
+        line, before = it.message
+        if line == it.line - 1 and len(before) > len(text):
+            text += before[len(text):]
+    it.message = (it.line, text)
+    return text
 
 
 def _abort(it: Machine, rest: str) -> None:
