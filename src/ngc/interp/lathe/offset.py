@@ -87,9 +87,15 @@ def circle_circle(a: Seg, b: Seg) -> list[tuple[float, float]]:
     return [(mx - h * dz / d, mz + h * dx / d), (mx + h * dz / d, mz - h * dx / d)]
 
 
+_SHORT = 1e-3 - 1e-12  # (see check_joinable)
+
+
 def check_joinable(profile: list[Seg]) -> None:
     """G71/G72 with a D: rs274 cannot join two lines in a row that run along X, or along Z
-    (slanted lines in line it joins)."""
-    for a, b in itertools.pairwise(profile):
+    (slanted lines in line it joins).  A line shorter than 0.001 is left out first (as rs274
+    measures it: 0.0009999999 is, the 0.00099999999999945 from X3.86 to X3.861 is not)."""
+    moves = [seg for seg in profile
+             if not (seg.kind == LINE and math.hypot(seg.x1 - seg.x0, seg.z1 - seg.z0) < _SHORT)]
+    for a, b in itertools.pairwise(moves):
         if a.kind == LINE == b.kind and (a.x0 == a.x1 == b.x1 or a.z0 == a.z1 == b.z1):
             raise NgcSemanticError(PARALLEL)
