@@ -782,6 +782,9 @@ class Flow:
         end = self.skip(f, block.line, label, ("endsub",), DEFINE)
         self.subs[label] = Sub(label, f.body, block.line)
         f.pc = end.line + 1
+        # rs274 forgets here that a call has returned: a ``return`` or ``endsub`` in the main
+        # program after this definition is refused as before any call.
+        self.resumed = None
 
     def _call(self, f: Frame, block: Block, ow: OWord) -> None:
         it = self.interp
