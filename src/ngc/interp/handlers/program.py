@@ -47,6 +47,7 @@ def comment(it: Machine, text: str) -> None:
         if body:
             logfile.probe_comment(it, body)
         it.emit(ops.Comment(body))
+        _pass_message(it)
         return
     kind = (m.group(1) or m.group(2)).lower()
     _ACTIVE[kind](it, body[m.end() :])
@@ -54,6 +55,14 @@ def comment(it: Machine, text: str) -> None:
 
 def _msg(it: Machine, rest: str) -> None:
     it.emit(ops.Message(rest))
+    _pass_message(it)
+
+
+def _pass_message(it: Machine) -> None:
+    """A comment or MSG line leaves rs274's DEBUG/PRINT buffer as it was (see _shown_text)."""
+    line, text = it.message
+    if line == it.line - 1:
+        it.message = (it.line, text)
 
 
 def _debug(it: Machine, rest: str) -> None:
@@ -70,10 +79,10 @@ def _shown_text(it: Machine, rest: str) -> str:
 
     rs274 builds both in one buffer and ends the text there, except after a ``#`` that is the
     comment's last character: that ``#`` is not shown, and the text runs on into what the buffer
-    held.  Right after another DEBUG or PRINT line that is the rest of its text (``(debug,
-    abcdef)`` then ``(print, x#)`` prints `` xbcdef``); after other lines rs274 shows what was
-    left in its memory, often nothing, sometimes stray bytes, which is not modelled: the text
-    ends there."""
+    held.  Right after another DEBUG or PRINT line (comment and MSG lines between) that is the
+    rest of its text: ``(debug, abcdef)`` then ``(print, x#)`` prints `` xbcdef``.  After other
+    lines rs274 shows what was left in its memory, often nothing, sometimes stray bytes, which
+    is not modelled: the text ends there."""
     text = substitute(it, rest)
     if rest.endswith("#"):
         text = text[:-1]
