@@ -22,20 +22,9 @@ KNOWN: dict[str, str] = {
     "expr-known-tan-271-last-place": "TAN[271]: the C library's tanl is 1.08 long double units "
     "off there, and the double rounding shows it; ngc's exact long double tangent rounds the "
     "other way (one case in about 5000)",
-    "lathe-rough-pocket-g72-2-chamfer": "G72 rounds an outside corner where the moved ends part "
-    "by 0.01 or more along X, as rs274 does in the fuzzer's programs; here, with a chamfer at the "
-    "end of the move after the corner, rs274 crosses the moved lines instead (without the chamfer "
-    "it rounds); how a chamfer there changes the corner is not known yet",
     "lathe-known-arc-line-end-radius": "G7x: where a moved arc meets a line after it, rs274's "
     "circle mostly has the radius of the arc's end scaled with its start (as for a line before "
     "an arc); this near-tangent corner asks for the end moved along its own radius instead",
-    "lathe-known-chamfer-moves-first-corner": "G7x: a chamfer at the end of a later move changes "
-    "how rs274 rounds the profile's first outside corner and leaves the chamfer's own corner "
-    "cut; the rule is not known yet (see also lathe-rough-pocket-g72-2-chamfer)",
-    "lathe-rough-closing-level": "G72 whose profile, moved by D, ends on the start's level: rs274 "
-    "closes it with a feed of no length here but not where the same moves end at X10 instead of "
-    "X12.56, nor with D0 (lathe-rough-g72-ends-on-level): its arithmetic leaves the moved end a "
-    "few units in the last place off the level, and ngc's does not",
     "nurbs-comp-on": "ngc refuses a G5.2 block while cutter compensation is on; rs274 runs it, "
     "dropping the move compensation holds, and offsets the next moves in a way not known yet",
 }

@@ -25,6 +25,14 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   division) to that side; a negative distance moves it the other way.  Lines move along their
   normal; an arc keeps its centre and is scaled about it by its start's new radius over its old
   one (a centre-format arc's end a little off its start's circle keeps that proportion).
+* The profile moves in steps, its corners joined after each (as below): a step is at most half
+  the shortest chord of a move and half the smallest radius of an arc of the profile as the last
+  step left it (the arcs rounding corners included).  So an outside corner whose moved ends part
+  by less than 0.01 in each step stays sharp (small distances beside short moves), and a corner
+  that turns the other way partway is rounded about where it was then (a fillet of the rest of
+  the distance about a moved corner, where rs274 prints "Oops").  Found with G70 on profiles of
+  two arcs, of a fillet after an arc, and of short lines: the fillet's centre stays put as D
+  grows, at the distance of half the smallest radius or chord.
 * Corners: an inside corner is cut back to where the moved carriers cross (a line and a circle: at
   the crossing nearer to where the first ends, an arc before the line first where the line crosses
   the arc itself; two circles: at the crossing right of the line from the first centre to the
@@ -237,13 +245,49 @@ def moved(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
     return moved_with_corners(profile, side, d, axis, roughing=roughing)[0]
 
 
+_MAX_STEPS = 200  # then the rest at once (an arc shrinking by half its radius each step)
+
+
+def _step(moves: Profile) -> float:
+    """How far the profile moves at once: half its shortest chord, or half its smallest arc's
+    radius."""
+    h = math.inf
+    for seg in moves:
+        chord = math.hypot(seg.x1 - seg.x0, seg.z1 - seg.z0)
+        if chord > 0.0:
+            h = min(h, chord / 2)
+        if seg.kind != LINE:
+            h = min(h, math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz) / 2)
+    return h
+
+
 def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
                        roughing: bool = False) -> tuple[list[Seg], set[int]]:
-    """``moved``, and the indices of the arcs it put in to round outside corners."""
+    """``moved``, and the indices of the arcs it put in to round outside corners.  The profile
+    moves in steps (``_step``), its corners joined after each."""
+    if d == 0.0:
+        return list(profile[1:]), set()
+    current = list(profile)
+    left = abs(d)
+    sign = 1.0 if d > 0 else -1.0
+    for k in range(_MAX_STEPS):
+        h = min(left, _step(current[1:]))
+        if not h > 1e-9 or h >= left:
+            h = left
+        current = [current[0], *_moved_once(current, side, sign * h, axis, roughing, k == 0)]
+        left -= h
+        if left <= 0.0:
+            break
+    else:
+        current = [current[0], *_moved_once(current, side, sign * left, axis, roughing, False)]
+    moved = current[1:]
+    return moved, {i for i, seg in enumerate(moved) if seg.rounding}
+
+
+def _moved_once(profile: Profile, side: float, d: float, axis: tuple[float, float],
+                roughing: bool, first: bool) -> list[Seg]:
     moves = profile[1:]
     corners: set[int] = set()
-    if d == 0.0:
-        return list(moves), corners
     gz, gx = (abs(axis[0]), abs(axis[1])) if roughing else axis
     mirror = _mirror(profile, axis)
     if axis[0] == 0.0:
@@ -258,7 +302,8 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
         t1 = tangent(moves[i - 1], True)
         t2 = tangent(moves[i], False)
         turn = t1[0] * t2[1] - t1[1] * t2[0]  # > 0: turning left
-        if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS and not roughing:
+        if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS and first and not roughing:
+            # (G70: two programmed lines in line; lines a step turned round are not refused)
             raise NgcSemanticError(PARALLEL)
         if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
             if roughing and _turned_round(out, moves[i - 1], prev.x1, prev.z1):
@@ -279,14 +324,20 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
             corners.add(len(out))
             out[-1] = prev._replace(x1=ex, z1=ez)
             out.append(Seg(CCW if turn > 0 else CW, ex, ez, seg.x0, seg.z0, corner.x0,
-                           corner.z0, line=corner.line))
+                           corner.z0, line=corner.line, rounding=True))
             out.append(seg)
             continue
         if prev.kind == LINE and seg.kind == LINE and abs(turn) < EPS:
             out.append(seg)  # (slanted lines in line, joined as G71/G72 join them)
             continue
         r_arc = _carrier_radius(prev, shifted[i - 1], moves[i], side, d)
-        px, pz = _crossing(prev, seg, mirror, r_arc)
+        try:
+            px, pz = _crossing(prev, seg, mirror, r_arc)
+        except NgcSemanticError:
+            if first:
+                raise
+            out.append(seg)  # (lines a step made parallel: they stay as they are)
+            continue
         if roughing and _turned_round(out, moves[i - 1], px, pz):
             # a line shorter than the distance turns round between its corners: G71/G72 leave
             # it out, the lines on either side meeting where their carriers cross
@@ -294,7 +345,7 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
             continue
         out[-1] = prev._replace(x1=px, z1=pz)
         out.append(seg._replace(x0=px, z0=pz))
-    return out, corners
+    return out
 
 
 def _turned_round(out: list[Seg], was: Seg, px: float, pz: float) -> bool:

@@ -37,6 +37,7 @@ class Seg(NamedTuple):
     fillet: float = 0.0
     chamfer: float = 0.0
     line: int = 0
+    rounding: bool = False  # an arc put in to round an outside corner of a moved profile
 
 
 Profile = list[Seg]
