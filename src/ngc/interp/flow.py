@@ -793,7 +793,7 @@ class Flow:
         if len(ow.args) > MAX_ARGS:
             raise NgcSemanticError("Too many subroutine parameters")
         args = [evaluate(a, params) for a in ow.args]
-        sub = self.subs.get(label) or self.find(f, block, label, fanuc=False)
+        sub = self.subs.get(label) or self.find_for_call(f, block, label, args)
         if sub.fanuc:
             self.refuse(sub, "Fanuc 'O....' subroutine must be called with 'M98'")
         self.push(Frame(sub.body, sub.start + 1, sub))
@@ -815,6 +815,22 @@ class Flow:
     def refuse(self, sub: Sub, message: str) -> NoReturn:
         raise NgcSemanticError(message, file=sub.body.file, line=sub.start,
                                source=sub.body.source(sub.start))
+
+    def find_for_call(self, f: Frame, block: Block, label: str, args: list[float]) -> Sub:
+        """``find`` as rs274 runs it for a call: with the call's parameters in place, #1-#30 the
+        arguments (the others 0) and no local named parameter, so the labels the search passes
+        read those (a local name of the caller is not defined there)."""
+        params = self.interp.machine.params
+        numbered = params.numbered
+        saved = numbered[1 : ARGUMENT_PARAMETERS + 1]
+        numbered[1 : ARGUMENT_PARAMETERS + 1] = [0.0] * ARGUMENT_PARAMETERS
+        numbered[1 : len(args) + 1] = args
+        params.locals.append({})
+        try:
+            return self.find(f, block, label, fanuc=False)
+        finally:
+            params.locals.pop()
+            numbered[1 : ARGUMENT_PARAMETERS + 1] = saved
 
     def find(self, f: Frame, block: Block, label: str, fanuc: bool) -> Sub:
         """A subroutine not defined yet: ``<label>.ngc``, else further down this file."""
