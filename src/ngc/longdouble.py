@@ -42,6 +42,8 @@ TWO_PI_REST = float(PI_LONG_DOUBLE * 2 - Fraction(2 * math.pi))
 def long_sum(*terms: float) -> float:
     """The sum of ``terms`` (doubles) rounded to a long double, then to a double."""
     total = math.fsum(terms)  # the exact sum rounded once
+    if not math.isfinite(total):
+        return total
     half = math.ulp(total) / 2
     # rounded twice, the sum differs only near a tie between two doubles (or at a power of two)
     if abs(abs(math.fsum((*terms, -total))) - half) > half / 512 and math.frexp(total)[0] != 0.5:

@@ -380,7 +380,7 @@ def arc(m: Machine, end: list[float], c1: float, c2: float, rotation: int) -> No
     tangent = t0 + HALF_PI if rotation > 0 else t0 - HALF_PI
     # rs274 meets a held line at the arc's start angle but the end's radius: the line moves
     # along the start's radius by the difference
-    lift = (big_end - big) / big
+    lift = (big_end - big) / big if big else 0.0  # (an arc starting at its centre: none)
     turn = tangent - c.pdir
     if turn > PI or turn < -PI:
         turn = _turn(c.pdir, tangent)

@@ -133,6 +133,8 @@ def _foot(seg: Seg, ox: float, oz: float) -> tuple[float, float]:
         return seg.x0 + t * dx, seg.z0 + t * dz
     r = _radius(seg)
     d = math.hypot(ox - seg.cx, oz - seg.cz)
+    if d == 0.0:  # (a fillet about the arc's own centre: rs274 finds the path not monotonic)
+        raise NgcSemanticError(NOT_MONOTONIC)
     return seg.cx + (ox - seg.cx) * r / d, seg.cz + (oz - seg.cz) * r / d
 
 

@@ -155,9 +155,12 @@ def _crossing(a: Seg, b: Seg, mirror: float, r_arc: float = 0.0) -> tuple[float,
         r = r_arc
         dx, dz = line.x1 - line.x0, line.z1 - line.z0
         n2 = dx * dx + dz * dz
+        if not 0.0 < n2 < math.inf:  # (a line of no length, or past what a double holds)
+            raise NgcSemanticError(NOT_MONOTONIC)
         t = ((arc.cx - line.x0) * dx + (arc.cz - line.z0) * dz) / n2
         fx, fz = line.x0 + t * dx, line.z0 + t * dz  # the foot of the centre on the line
-        h2 = r * r - ((fx - arc.cx) ** 2 + (fz - arc.cz) ** 2)
+        ex, ez = fx - arc.cx, fz - arc.cz
+        h2 = r * r - (ex * ex + ez * ez)  # (products: a square past a double's range is inf)
         if h2 <= 0:
             return fx, fz
         h = math.sqrt(h2 / n2)

@@ -1,0 +1,70 @@
+"""Lathe cycles on inputs the soak found to end in an internal error: each is now an answer or a
+program error (exit 0 or 1), never exit 70."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from cli_helpers import run, write
+from ngc.errors import NgcSemanticError
+from ngc.interp.lathe.finishing import _crossing
+from ngc.interp.lathe.profile import CW, LINE, Seg
+from ngc.longdouble import long_sum
+
+PROGRAMS = {
+    # a fillet about its arc's own centre (rs274: "G7X error: Not monotonic")
+    "fillet-about-arc-centre": "G18 G21 F100\nG0 X20 Z2\no100 sub\nG1 X10 Z0\nG1 X11 Z-10\n"
+    "G2 X11 Z-12 I0 K-1 A1.\nG3 X11 Z-14 I0 K-1\nG1 Z-20\no100 endsub\nG70 Q100\nM2\n",
+    # G70 under compensation with a tool of no radius, a fillet in the profile
+    "comp-no-radius-fillet": "O10 SUB\nG1 X21.400 Z-0.6\nG1 X17.550\nG1 X17.550 Z-2.2 A0.5\n"
+    "G1 X14.750\nO10 ENDSUB\nG18 G21 G90 G40 G80 G8 G54\nG96 D800 S150 M3\nG95 F0.120\nG42\n"
+    "G70 Q10 X24 Z2 D1 P2\nM2\n",
+    # a distance past what a double holds
+    "huge-distance": "O110 SUB\nG0 X27 Z0\nG1 U-3.3 Z-4.400\nG3 X23.036 Z-12.566 I-4.2 K0\n"
+    "O110 ENDSUB\ng18 g21 g90 g40 g80 g8 f0.2\ng71.2 q110 x1.700 z2 d[EXP[709]] i1.000 r0.3\nM2\n",
+    # a profile point at 1e300 under compensation: NaN where the arcs are compensated
+    "huge-point-comp": "O10 SUB\nG0 X3.200 Z[10**300]\nG1 X4.5 Z-1.300\n"
+    "G3 X7.600 Z-6.894 I-8.202 K-8.202\nO10 ENDSUB\nG18 G21 G90 G40 G80 G8 G54\nG97 S800 M3\n"
+    "G95 F0.25\nG71.2 Q10 X24 Z1 D0.2 I1.5\nG42\nG70 Q10 X24.000 Z1.000 D0.500 P2 E0\nM2\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(PROGRAMS))
+def test_no_internal_error(name: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = write(tmp_path, f"{name}.ngc", PROGRAMS[name])
+    for argv in (("rs274", "-g", path), ("check", path)):
+        code, _, err = run(capsys, *argv)
+        assert code in (0, 1), (argv, err)
+        assert "internal error" not in err
+
+
+def test_fillet_about_arc_centre_is_not_monotonic(tmp_path: Path,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    path = write(tmp_path, "p.ngc", PROGRAMS["fillet-about-arc-centre"])
+    code, _, err = run(capsys, "rs274", "-g", path)
+    assert code == 1 and "G7X error: Not monotonic" in err
+
+
+def test_crossing_of_huge_moves_is_not_an_overflow() -> None:
+    line = Seg(LINE, 1e200, 0.0, 2e200, 1e200)
+    arc = Seg(CW, 2e200, 1e200, 3e200, 2e200, 3e200, 1e200)
+    try:
+        x, z = _crossing(line, arc, 1.0, 1e200)
+    except NgcSemanticError:
+        return
+    assert isinstance(x, float) and isinstance(z, float)
+
+
+def test_crossing_with_a_line_of_no_length_is_a_program_error() -> None:
+    line = Seg(LINE, 1.0, 1.0, 1.0, 1.0)
+    arc = Seg(CW, 1.0, 1.0, 2.0, 0.0, 2.0, 1.0)
+    with pytest.raises(NgcSemanticError):
+        _crossing(line, arc, 1.0, 1.0)
+
+
+def test_long_sum_of_nan_or_infinity() -> None:
+    assert math.isnan(long_sum(math.nan, math.pi))
+    assert long_sum(math.inf, 1.0) == math.inf
