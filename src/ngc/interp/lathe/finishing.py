@@ -273,16 +273,14 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
     current = list(profile)
     left = abs(d)
     sign = 1.0 if d > 0 else -1.0
-    for k in range(_MAX_STEPS):
+    for k in range(_MAX_STEPS + 1):
         h = min(left, _step(current[1:]))
-        if not h > 1e-9 or h >= left:
-            h = left
+        if not h > 1e-9 or k == _MAX_STEPS:
+            h = left  # (the rest at once)
         current = [current[0], *_moved_once(current, side, sign * h, axis, roughing, k == 0)]
         left -= h
         if left <= 0.0:
             break
-    else:
-        current = [current[0], *_moved_once(current, side, sign * left, axis, roughing, False)]
     moved = current[1:]
     return moved, {i for i, seg in enumerate(moved) if seg.rounding}
 
@@ -290,7 +288,6 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
 def _moved_once(profile: Profile, side: float, d: float, axis: tuple[float, float],
                 roughing: bool, first: bool) -> list[Seg]:
     moves = profile[1:]
-    corners: set[int] = set()
     gz, gx = (abs(axis[0]), abs(axis[1])) if roughing else axis
     mirror = _mirror(profile, axis)
     if axis[0] == 0.0:
@@ -311,7 +308,7 @@ def _moved_once(profile: Profile, side: float, d: float, axis: tuple[float, floa
         if math.hypot(prev.x1 - seg.x0, prev.z1 - seg.z0) < EPS:
             if roughing and _turned_round(out, moves[i - 1], prev.x1, prev.z1):
                 # (a line turned round, as below, whose end meets the next move as it is)
-                _join_past(out, corners, seg, mirror,
+                _join_past(out, seg, mirror,
                            _carrier_radius(out[-2], shifted[i - 2], moves[i], side, d))
                 continue
             out.append(seg)
@@ -324,7 +321,6 @@ def _moved_once(profile: Profile, side: float, d: float, axis: tuple[float, floa
         gap = (seg.z0 - ez) * gz + (seg.x0 - ex) * gx
         if outside and abs(gap) >= ROUNDED:
             # the moved segments part (an outside corner): an arc about the corner joins them
-            corners.add(len(out))
             out[-1] = prev._replace(x1=ex, z1=ez)
             out.append(Seg(CCW if turn > 0 else CW, ex, ez, seg.x0, seg.z0, corner.x0,
                            corner.z0, line=corner.line, rounding=True))
@@ -344,7 +340,7 @@ def _moved_once(profile: Profile, side: float, d: float, axis: tuple[float, floa
         if roughing and _turned_round(out, moves[i - 1], px, pz):
             # a line shorter than the distance turns round between its corners: G71/G72 leave
             # it out, the lines on either side meeting where their carriers cross
-            _join_past(out, corners, seg, mirror, r_arc)
+            _join_past(out, seg, mirror, r_arc)
             continue
         out[-1] = prev._replace(x1=px, z1=pz)
         out.append(seg._replace(x0=px, z0=pz))
@@ -359,10 +355,9 @@ def _turned_round(out: list[Seg], was: Seg, px: float, pz: float) -> bool:
             and (px - prev.x0) * (was.x1 - was.x0) + (pz - prev.z0) * (was.z1 - was.z0) < 0)
 
 
-def _join_past(out: list[Seg], corners: set[int], seg: Seg, mirror: float, r_arc: float) -> None:
+def _join_past(out: list[Seg], seg: Seg, mirror: float, r_arc: float) -> None:
     """Leave out the move ``out[-1]``: the move before it and ``seg`` meet where their carriers
     cross (``r_arc``: see ``_crossing``), and ``seg`` follows."""
-    corners.discard(len(out) - 1)
     out.pop()
     prev = out[-1]
     px, pz = _crossing(prev, seg, mirror, r_arc)

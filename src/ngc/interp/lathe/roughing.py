@@ -392,17 +392,16 @@ def _bridged(out: Out, fr: _Frame, chain: list[Seg], tags: list[int], pockets_en
                     break
             if exit_at is None:
                 return  # (a pocket the profile never climbs out of: the rest is left uncut)
-            if exit_at is not None:
-                if tags[i] == CORNER:
-                    out.feed(seg.x0, seg.z0)
-                j, hb = exit_at
-                x, z = fr.xz(a0, hb)
-                out.feed(x, z)
-                land = chain[j]
-                if abs(x - land.x1) > EPS or abs(z - land.z1) > EPS:
-                    _emit(out, land._replace(x0=x, z0=z))
-                i = j + 1
-                continue
+            if tags[i] == CORNER:
+                out.feed(seg.x0, seg.z0)
+            j, hb = exit_at
+            x, z = fr.xz(a0, hb)
+            out.feed(x, z)
+            land = chain[j]
+            if abs(x - land.x1) > EPS or abs(z - land.z1) > EPS:
+                _emit(out, land._replace(x0=x, z0=z))
+            i = j + 1
+            continue
         if tags[i] != CONT:
             out.feed(seg.x0, seg.z0)
         _emit(out, seg)
