@@ -194,127 +194,40 @@ def _swept(klass: str, detail: str) -> tuple[str, str]:
     return klass, detail
 
 
-def api_run(data: bytes, decoding: str, feed: str, max_iterations: int,
-            time_limit: float) -> tuple[str, float, str, str]:
-    """Run one program in this process: (outcome, seconds, failure class or "", detail)."""
-    text = hostile.decode(data, decoding)
+def guarded(call: Callable[[], str], time_limit: float,
+            check_error: type[Exception] | tuple[()] = (),
+            describe: Callable[[NgcError], str] = NgcError.render,
+            cleanup: Callable[[], object] | None = None) -> tuple[str, float, str, str]:
+    """Run one input in this process under the time limit (CPU seconds): (outcome, seconds,
+    failure class or "", detail).  ``call`` gives the outcome; a ``check_error`` is a failed
+    check of its results; ``cleanup`` runs after it, within the time counted."""
     start = cpu_seconds()
     klass = detail = ""
     outcome = "ok"
     try:
         with hostile.time_limit(time_limit, cpu=True):
-            hostile.run_api(text, feed=feed, max_iterations=max_iterations)
+            outcome = call()
     except NgcError as exc:
-        outcome, detail = "NgcError", exc.message
+        outcome, detail = "NgcError", describe(exc)
+    except check_error as exc:
+        klass, detail = f"check: {str(exc).split(':')[0]}", str(exc)
     except hostile.Overtime:
         klass = f"over {time_limit:g} s"
     except Exception as exc:
         klass, detail = hostile.failure_class(exc), traceback.format_exc()
+    finally:
+        if cleanup is not None:
+            cleanup()
     seconds = cpu_seconds() - start
     klass, detail = _swept(klass, detail)
     return ("fail" if klass else outcome), seconds, klass, detail
 
 
-def api_input(cfg: Config, index: int, result: TaskResult, rss_flagged: list[bool]) -> None:
-    rng, kind, data = make_input(cfg, "api", index)
-    decoding, feed = rng.choice(hostile.DECODINGS), rng.choice(hostile.FEEDS)
-    outcome, seconds, klass, detail = api_run(data, decoding, feed, cfg.max_iterations,
-                                              cfg.time_limit)
-    how = {"decoding": decoding, "feed": feed}
-    result.counts[f"api {kind} {outcome}"] += 1
-    if seconds > result.slowest[0]:
-        result.slowest = (seconds, f"api {index}")
-    if klass:
-        add_failure(result, cfg, Failure("api", index, kind, f"api {klass}", detail, data, seconds,
-                                         how))
-    rss_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-    if rss_mb > cfg.rss_limit_mb and not rss_flagged[0]:  # once per worker: the input that did it
-        rss_flagged[0] = True
-        add_failure(result, cfg, Failure("api", index, kind, f"api RSS over {cfg.rss_limit_mb:g} MB",
-                                         f"the worker's peak RSS reached {rss_mb:.1f} MB with this "
-                                         f"input ({klass or outcome})", data, seconds, how))
-
-
-def time_input(cfg: Config, index: int, result: TaskResult, rss_flagged: list[bool],
-               base: Path) -> None:
-    """One ``ngc time`` input through the API: a machine (files in a folder of its own, not in
-    the working directory the program might write to) and a program."""
-    rng, kind, data = make_input(cfg, "time", index)
-    folder = base / f"time-{index}"
-    folder.mkdir()
-    try:
-        files = timed.machine_files(rng, folder)
-        configs = {path.name: path.read_bytes() for path in files.values()}
-        outcome, seconds, klass, detail = time_api_run(data, files, rng, cfg)
-    finally:
-        shutil.rmtree(folder, ignore_errors=True)
-    how = {"configs": configs}
-    result.counts[f"time {kind} {outcome}"] += 1
-    if seconds > result.slowest[0]:
-        result.slowest = (seconds, f"time {index}")
-    if klass:
-        add_failure(result, cfg, Failure("time", index, kind, f"time {klass}", detail, data,
-                                         seconds, how))
-    rss_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-    if rss_mb > cfg.rss_limit_mb and not rss_flagged[0]:
-        rss_flagged[0] = True
-        add_failure(result, cfg, Failure("time", index, kind,
-                                         f"time RSS over {cfg.rss_limit_mb:g} MB",
-                                         f"the worker's peak RSS reached {rss_mb:.1f} MB with "
-                                         f"this input ({klass or outcome})", data, seconds, how))
-
-
-def time_api_run(data: bytes, files: dict[str, Path], rng: random.Random, cfg: Config
-                 ) -> tuple[str, float, str, str]:
-    """(outcome, seconds, failure class or "", detail) of one program timed through the API."""
-    text = hostile.decode(data, "utf-8")
-    start = cpu_seconds()
-    klass = detail = ""
-    outcome = "ok"
-    try:
-        with hostile.time_limit(cfg.time_limit, cpu=True):
-            outcome = timed.run_api(text, files, rng, cfg.max_iterations)
-    except NgcError as exc:
-        outcome, detail = "NgcError", exc.render()
-    except timed.TimeCheckError as exc:
-        klass, detail = f"check: {str(exc).split(':')[0]}", str(exc)
-    except hostile.Overtime:
-        klass = f"over {cfg.time_limit:g} s"
-    except Exception as exc:
-        klass, detail = hostile.failure_class(exc), traceback.format_exc()
-    seconds = cpu_seconds() - start
-    klass, detail = _swept(klass, detail)
-    return ("fail" if klass else outcome), seconds, klass, detail
-
-
-def surface_input(cfg: Config, source: str, index: int, result: TaskResult,
-                  rss_flagged: list[bool], base: Path) -> None:
-    """One input of the engine or the lathe surface, in this process: its machine inputs in a
-    folder of its own (tests/fuzz/engined.py, lathed.py: ``soak_run``)."""
-    rng, kind, data = make_input(cfg, source, index)
-    module = engined if source == "engine" else lathed
-    folder = base / f"{source}-{index}"
-    folder.mkdir()
-    configs: dict[str, bytes] = {}
-    start = cpu_seconds()
-    klass = detail = ""
-    try:
-        with hostile.time_limit(cfg.time_limit, cpu=True):
-            outcome = module.soak_run(rng, data, folder, cfg.max_iterations, configs)
-    except NgcError as exc:
-        outcome, detail = "NgcError", exc.render()
-    except module.CheckError as exc:
-        klass, detail = f"check: {str(exc).split(':')[0]}", str(exc)
-    except hostile.Overtime:
-        klass = f"over {cfg.time_limit:g} s"
-    except Exception as exc:
-        klass, detail = hostile.failure_class(exc), traceback.format_exc()
-    finally:
-        shutil.rmtree(folder, ignore_errors=True)
-    seconds = cpu_seconds() - start
-    klass, detail = _swept(klass, detail)
-    outcome = "fail" if klass else outcome
-    how = {"configs": configs}
+def record(cfg: Config, result: TaskResult, rss_flagged: list[bool], source: str, index: int,
+           kind: str, data: bytes, run: tuple[str, float, str, str], how: dict[str, Any]) -> None:
+    """Count one input's outcome (``run``, as ``guarded`` gives it), keep it if it failed, and
+    flag the input that took the worker's peak RSS over the limit (once per worker)."""
+    outcome, seconds, klass, detail = run
     result.counts[f"{source} {kind} {outcome}"] += 1
     if seconds > result.slowest[0]:
         result.slowest = (seconds, f"{source} {index}")
@@ -328,6 +241,65 @@ def surface_input(cfg: Config, source: str, index: int, result: TaskResult,
                                          f"{source} RSS over {cfg.rss_limit_mb:g} MB",
                                          f"the worker's peak RSS reached {rss_mb:.1f} MB with "
                                          f"this input ({klass or outcome})", data, seconds, how))
+
+
+def api_run(data: bytes, decoding: str, feed: str, max_iterations: int,
+            time_limit: float) -> tuple[str, float, str, str]:
+    """Run one program in this process: (outcome, seconds, failure class or "", detail)."""
+    text = hostile.decode(data, decoding)
+
+    def call() -> str:
+        hostile.run_api(text, feed=feed, max_iterations=max_iterations)
+        return "ok"
+
+    return guarded(call, time_limit, describe=lambda exc: exc.message)
+
+
+def api_input(cfg: Config, index: int, result: TaskResult, rss_flagged: list[bool]) -> None:
+    rng, kind, data = make_input(cfg, "api", index)
+    decoding, feed = rng.choice(hostile.DECODINGS), rng.choice(hostile.FEEDS)
+    run = api_run(data, decoding, feed, cfg.max_iterations, cfg.time_limit)
+    record(cfg, result, rss_flagged, "api", index, kind, data, run,
+           {"decoding": decoding, "feed": feed})
+
+
+def time_input(cfg: Config, index: int, result: TaskResult, rss_flagged: list[bool],
+               base: Path) -> None:
+    """One ``ngc time`` input through the API: a machine (files in a folder of its own, not in
+    the working directory the program might write to) and a program."""
+    rng, kind, data = make_input(cfg, "time", index)
+    folder = base / f"time-{index}"
+    folder.mkdir()
+    try:
+        files = timed.machine_files(rng, folder)
+        configs = {path.name: path.read_bytes() for path in files.values()}
+        run = time_api_run(data, files, rng, cfg)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+    record(cfg, result, rss_flagged, "time", index, kind, data, run, {"configs": configs})
+
+
+def time_api_run(data: bytes, files: dict[str, Path], rng: random.Random, cfg: Config
+                 ) -> tuple[str, float, str, str]:
+    """(outcome, seconds, failure class or "", detail) of one program timed through the API."""
+    text = hostile.decode(data, "utf-8")
+    return guarded(lambda: timed.run_api(text, files, rng, cfg.max_iterations), cfg.time_limit,
+                   timed.TimeCheckError)
+
+
+def surface_input(cfg: Config, source: str, index: int, result: TaskResult,
+                  rss_flagged: list[bool], base: Path) -> None:
+    """One input of the engine or the lathe surface, in this process: its machine inputs in a
+    folder of its own (tests/fuzz/engined.py, lathed.py: ``soak_run``)."""
+    rng, kind, data = make_input(cfg, source, index)
+    module = engined if source == "engine" else lathed
+    folder = base / f"{source}-{index}"
+    folder.mkdir()
+    configs: dict[str, bytes] = {}
+    run = guarded(lambda: module.soak_run(rng, data, folder, cfg.max_iterations, configs),
+                  cfg.time_limit, module.CheckError,
+                  cleanup=lambda: shutil.rmtree(folder, ignore_errors=True))
+    record(cfg, result, rss_flagged, source, index, kind, data, run, {"configs": configs})
 
 
 def add_failure(result: TaskResult, cfg: Config, failure: Failure) -> None:
