@@ -68,3 +68,24 @@ def test_crossing_with_a_line_of_no_length_is_a_program_error() -> None:
 def test_long_sum_of_nan_or_infinity() -> None:
     assert math.isnan(long_sum(math.nan, math.pi))
     assert long_sum(math.inf, 1.0) == math.inf
+
+
+def test_profile_past_a_doubles_range_is_refused_not_nan(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    # a profile line to Z EXP[709]: its moved and crossed ends were NaN in G72.2's passes
+    path = write(tmp_path, "exp709.ngc", "G18 G90 G40 G21 F200\nG0 X40 Z20\no101 sub\n"
+                 "G0 X1.9 Z3.6\nX5.42\nG1 X5.42 Z[EXP[709]]\no101 endsub\n"
+                 "G72.2 Q101 X1.4 Z6.1 D0.2 I1 R0.3\nM2\n")
+    code, out, err = run(capsys, "canon", path)
+    assert code == 1
+    assert "nan" not in out
+    assert "The cycle's profile is too large to compute its moves" in err
+
+
+def test_check_says_a_length_past_a_doubles_range(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = write(tmp_path, "far.ngc", "G0 X[EXP[709]]\nG0 X[0-EXP[709]]\nM2\n")
+    code, out, _ = run(capsys, "check", path)
+    assert code == 0
+    assert "rapid length: past a double's range (mm), feed length: 0.0000 mm" in out
+    assert "inf" not in out and "nan" not in out

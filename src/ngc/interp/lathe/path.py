@@ -54,6 +54,7 @@ class Out:
 
     def _straight(self, kind: type, x: float, z: float) -> None:
         m = self.m
+        _finite(x, z)
         if self.zeros is not None:
             x, z = self.zeros(x, z)
         end = self._end(x, z)
@@ -69,6 +70,7 @@ class Out:
         radii at start and end are held to a programmed arc's tolerance first."""
         m = self.m
         motion.check_arc_feed(m, _NO_WORDS)
+        _finite(x, z, cx, cz)
         if checked:
             start = m.state.pos if m.comp is None else m.comp.prog
             check_radii(start[0], start[2], x, z, cx, cz, m.state.metric)
@@ -83,6 +85,14 @@ class Out:
         m.move(ops.ArcFeed, (z, x, cz, cx, rotation, end[1], end[3], end[4], end[5]), m.label,
                m.line)
         m.state.pos = end
+
+
+def _finite(*coords: float) -> None:
+    """A cycle's move is between numbers: a profile whose numbers are past a double's range when
+    moved, joined or crossed (EXP[709] and the like) is refused rather than run as NaN."""
+    for v in coords:
+        if not math.isfinite(v):
+            raise NgcSemanticError("The cycle's profile is too large to compute its moves")
 
 
 def check_radii(x0: float, z0: float, x1: float, z1: float, cx: float, cz: float,
