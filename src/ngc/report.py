@@ -479,13 +479,21 @@ def render(result: CheckResult) -> str:
     paragraph = [
         f"{headline(result.path, result.error)}, {result.lines} lines",
         f"  moves: {s.moves} ({s.traverses} traverse, {s.feeds} feed, {s.arcs} arc)",
-        f"  rapid length: {s.rapid_length:.4f} {s.units}, "
-        f"feed length: {s.feed_length:.4f} {s.units}",
+        f"  rapid length: {_length_text(s.rapid_length, s.units)}, "
+        f"feed length: {_length_text(s.feed_length, s.units)}",
         f"  extents: {_extents_text(s)}",
     ]
     if s.mixed_units:
         paragraph.append(f"  (the program changes length units; all lengths are in {s.units})")
     return "\n".join(paragraph)
+
+
+def _length_text(length: float, units: str) -> str:
+    """A path length; one past a double's range (moves between coordinates near 1e308) is said
+    to be so rather than printed as inf or nan (JSON has null)."""
+    if math.isfinite(length):
+        return f"{length:.4f} {units}"
+    return f"past a double's range ({units})"
 
 
 def _extents_text(s: Summary) -> str:
