@@ -87,8 +87,10 @@ SURFACE_CHUNK = 50  # engine and lathe inputs per task
 SURFACES = ("engine", "lathe")  # run in the worker by surface_input
 SOURCES = ("api", "cli", *TIME_SOURCES, *SURFACES)
 IN_WORKER = ("api", "time", *SURFACES)  # sources run in the worker itself, under the time limit
-GRACE_S = 10.0  # a worker this long past its own time limit is stuck (in C code) and is killed
-CLI_TIMEOUT_S = 10.0  # a command line run is killed after this (over --time-limit is a failure)
+GRACE_S = 10.0  # a worker this much CPU time past its own time limit is stuck (in C code): killed
+CLI_TIMEOUT_S = 10.0  # a command line run is killed after this CPU time (over --time-limit fails)
+# ... and after this wall time, however little CPU it took (blocked, or starved on a busy machine)
+WALL_BACKSTOP_S = 300.0
 OUTPUT_LIMIT = 64 << 20  # ... or after this many bytes of output
 KILLED_TIME, KILLED_OUTPUT = -1000, -1001  # the exit code of a run killed for one of those
 WHOLE_JSON_LIMIT = 8 << 20  # JSON output up to this size may be one document
@@ -422,26 +424,41 @@ def strings(value: Any) -> Iterator[str]:
 
 def run_bounded(argv: list[str], work: Path, env: dict[str, str], stdin: Path | None,
                 out: Path, err: Path) -> tuple[int, float]:
-    """Run a command with its output in files; kill it past ``CLI_TIMEOUT_S`` of wall time
-    (exit ``KILLED_TIME``) or ``OUTPUT_LIMIT`` bytes of output (``KILLED_OUTPUT``).  Returns the
-    exit code and the CPU seconds (user and system) the command took."""
+    """Run a command with its output in files; kill it past ``CLI_TIMEOUT_S`` of CPU time or
+    ``WALL_BACKSTOP_S`` of wall time (exit ``KILLED_TIME``: a busy machine does not make a run
+    slow) or ``OUTPUT_LIMIT`` bytes of output (``KILLED_OUTPUT``).  Returns the exit code and the
+    CPU seconds (user and system) the command took."""
     before = children_cpu_seconds()
     with (open(stdin or os.devnull, "rb") as fin, out.open("wb") as fout,
           err.open("wb") as ferr):
         proc = subprocess.Popen(argv, cwd=work, env=env, stdin=fin, stdout=fout, stderr=ferr)
-        deadline = time.monotonic() + CLI_TIMEOUT_S
+        deadline = time.monotonic() + WALL_BACKSTOP_S
         while True:
             try:
                 rc = proc.wait(timeout=0.05)
                 break
             except subprocess.TimeoutExpired:
                 big = os.fstat(fout.fileno()).st_size + os.fstat(ferr.fileno()).st_size
-                if time.monotonic() > deadline or big > OUTPUT_LIMIT:
+                slow = (process_cpu_seconds(proc.pid) > CLI_TIMEOUT_S
+                        or time.monotonic() > deadline)
+                if slow or big > OUTPUT_LIMIT:
                     proc.kill()
                     proc.wait()
                     rc = KILLED_OUTPUT if big > OUTPUT_LIMIT else KILLED_TIME
                     break
     return rc, children_cpu_seconds() - before
+
+
+def process_cpu_seconds(pid: int) -> float:
+    """The CPU time (user and system) another running process has taken, s (from /proc; 0 where
+    it cannot be read, which leaves the wall-time backstop)."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as fh:
+            stat = fh.read()
+    except OSError:
+        return 0.0
+    fields = stat[stat.rfind(b")") + 2:].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
 def cpu_seconds() -> float:
@@ -587,7 +604,7 @@ def worker_main(conn: Connection, status: Any, cfg: Config) -> None:
             result = TaskResult(task)
             began = time.perf_counter()
             for index in range(task.start, task.stop):
-                status[0], status[1] = index, time.monotonic()
+                status[0], status[1], status[2] = index, time.monotonic(), time.process_time()
                 if task.source == "api":
                     api_input(cfg, index, result, rss_flagged)
                 elif task.source == "time":
@@ -617,7 +634,7 @@ class Worker:
 
 def start_worker(ctx: Any, cfg: Config) -> Worker:
     parent, child = ctx.Pipe()
-    status = ctx.RawArray("d", 2)
+    status = ctx.RawArray("d", 3)  # the input, and the wall and CPU times it started at
     status[0] = -1
     process = ctx.Process(target=worker_main, args=(child, status, cfg), daemon=True)
     process.start()
@@ -703,14 +720,26 @@ def run_tasks(cfg: Config, ctx: Any, workers: list[Worker], pending: deque[Task]
                 if w.conn in ready:
                     workers[i] = collect(ctx, cfg, w, totals, pending)
                 continue
-            limit = cfg.time_limit if w.task.source in IN_WORKER else CLI_TIMEOUT_S
-            if w.status[0] >= 0 and time.monotonic() - w.status[1] > limit + GRACE_S:
+            if w.status[0] >= 0 and stuck(cfg, w):
                 w.process.kill()
                 w.process.join()
                 workers[i] = requeue(ctx, cfg, w, totals, pending, "stuck (killed)")
         if progress and time.monotonic() - shown > 0.5:
             shown = time.monotonic()
             show_progress(totals, total, shown - started)
+
+
+def stuck(cfg: Config, w: Worker) -> bool:
+    """A worker is stuck on an input it runs itself when it has taken ``GRACE_S`` of CPU time past
+    the time limit on it (its own timer did not stop it: C code); any worker is after
+    ``WALL_BACKSTOP_S`` plus that of wall time on one input (command line runs are bounded by
+    ``run_bounded``)."""
+    assert w.task is not None
+    if w.task.source in IN_WORKER:
+        cpu = process_cpu_seconds(w.process.pid) - w.status[2]
+        if cpu > cfg.time_limit + GRACE_S:
+            return True
+    return time.monotonic() - w.status[1] > WALL_BACKSTOP_S + GRACE_S
 
 
 def collect(ctx: Any, cfg: Config, w: Worker, totals: Totals, pending: deque[Task]) -> Worker:
