@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator
 
-from .motion import need_feed, set_feed, straight
+from .motion import check_seconds, need_feed, set_feed, straight
 from .reading import Clauses, single
 from .state import AXIS, Dwell, Engine, EngineError, ModeChange, Op, Stop
 
@@ -64,6 +64,7 @@ def drill(eng: Engine, line: int, code: int, clauses: Clauses) -> Iterator[Op]:
         elif ref == "P":
             if v < 0.0:
                 raise EngineError(f"{what}: P (the dwell) must not be negative")
+            check_seconds(v, f"{what}: P (the dwell)")
             cycle.dwell = v
         else:
             raise EngineError(f"{ref} is not a word of {what}")

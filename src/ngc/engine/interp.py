@@ -104,6 +104,7 @@ def _dwell(eng: Engine, line: int, words: list[str]) -> Iterator[Op]:
     seconds = values[0] if values else 0.0
     if seconds < 0.0:
         raise EngineError("G4 (dwell): the time must not be negative")
+    motion.check_seconds(seconds, "G4 (dwell)")
     if eng.running and seconds > 0.0:
         yield from motion.timed(eng, line, {}, seconds, "run")
     else:

@@ -105,6 +105,16 @@ def polar_point(eng: Engine, name: str, values: list[float]) -> Clause:
 # whose square passes it, past 1e154): an error, not a segment of infinities or NaNs.
 TOO_LARGE = ("The move is too large to run: its positions, length or time are past what a number "
              "holds")
+# the longest a segment or a dwell may last, s (some 30 billion years; a move of the setup sheet's
+# widest travel at its slowest speed is shorter): a program's time, their sum,
+# stays a number however many there are
+MAX_SECONDS = 1e18
+
+
+def check_seconds(seconds: float, what: str) -> None:
+    """A segment's or a dwell's time is at most :data:`MAX_SECONDS` (and a number)."""
+    if not seconds <= MAX_SECONDS:
+        raise EngineError(f"{what} lasts more than {MAX_SECONDS:g} s: too long to run")
 
 
 def arc_count(sweep: float, radius: float) -> int:
@@ -295,6 +305,7 @@ def timed(eng: Engine, line: int, mm: dict[int, Cubic], seconds: float, motion: 
             eng.pos[k] = p + d
     if not (math.isfinite(seconds) and all(map(math.isfinite, chain.from_iterable(mm.values())))):
         raise EngineError(TOO_LARGE)
+    check_seconds(seconds, "The move")
     axes = {AXES[k]: (eng.shown(k, c[0]), eng.shown(k, c[1]), eng.shown(k, c[2]),
                       eng.shown(k, c[3])) for k, c in sorted(mm.items())}
     yield EngineSegment(line, seconds, axes, motion)
