@@ -164,11 +164,12 @@ def _sweep(seg: Seg) -> float:
     return s % (2.0 * math.pi)
 
 
-def _kept(new: Seg, old: Seg) -> bool:
-    """Whether ``new``, ``old`` cut back at its ends, still runs the way ``old`` did."""
+def _kept(new: Seg, old: Seg, to_nothing: bool = True) -> bool:
+    """Whether ``new``, ``old`` cut back at its ends, still runs the way ``old`` did; a line cut
+    back to nothing does where ``to_nothing``."""
     if new.kind == LINE:
-        return ((new.x1 - new.x0) * (old.x1 - old.x0) + (new.z1 - new.z0) * (old.z1 - old.z0)
-                > 0.0)
+        way = (new.x1 - new.x0) * (old.x1 - old.x0) + (new.z1 - new.z0) * (old.z1 - old.z0)
+        return way > 0.0 or (to_nothing and way == 0.0)
     s = _sweep(new)
     return 0.0 < s <= _sweep(old) + _ANGLE
 
@@ -204,8 +205,9 @@ def round_corners(profile: Profile) -> Profile:
         ox, oz = centre
         ax, az = _foot(cur, ox, oz)
         bx, bz = _foot(nxt, ox, oz)
+        # (a line may be cut back to nothing at its end, not at its start)
         if not ((cur.kind != LINE or _kept(cur._replace(x1=ax, z1=az), cur))
-                and (nxt.kind != LINE or _kept(nxt._replace(x0=bx, z0=bz), nxt))):
+                and (nxt.kind != LINE or _kept(nxt._replace(x0=bx, z0=bz), nxt, False))):
             raise NgcSemanticError(NOT_MONOTONIC)
         if cur.fillet:
             corner = Seg(CCW if side > 0 else CW, ax, az, bx, bz, ox, oz, line=cur.line)
@@ -221,8 +223,15 @@ def round_corners(profile: Profile) -> Profile:
             cut = cut._replace(x0=before.x1, z0=before.z1)
         if after is not None:
             cut = cut._replace(x1=after.x0, z1=after.z0)
-        if not _kept(cut, seg):
+        # (a line one corner cuts back to nothing is kept, as rs274 does; the two at its ends
+        # together may not)
+        if not _kept(cut, seg, before is None or after is None):
             raise NgcSemanticError(NOT_MONOTONIC)
+        if after is not None and cut.x0 == cut.x1 and cut.z0 == cut.z1:
+            # a line the corner at its end cuts back to nothing: rs274 runs the corner as a
+            # line from foot to foot, a fillet too
+            out.append(after._replace(kind=LINE, cx=0.0, cz=0.0))
+            continue
         out.append(cut)
         if after is not None:
             out.append(after)
