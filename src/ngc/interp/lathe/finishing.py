@@ -39,10 +39,12 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   second in rs274's frame, which turns Z round for a profile going +Z and X round for one whose
   last point lies below its first, the frame of G72 and of a G70 profile going along X a quarter
   turn of it; the circles' radii: see ``_crossing``; carriers that just miss meet where they come
-  closest). An outside corner gets an arc about the programmed corner when the moved ends lie 0.01
-  or more apart along the profile's axis, else it is cut like an inside one; an arc before it ends
-  where its circle meets the circle about the corner through its scaled end (the crossing right of
-  the line from its centre to the corner in rs274's frame). A corner whose tangents turn by less
+  closest). An outside corner gets an arc about the programmed corner when the moved ends (an
+  arc's as scaled) lie 0.01 or more apart along the profile's axis, else it is cut like an inside
+  one; an arc before it moved toward its centre ends where its circle meets the circle about the
+  corner through its scaled end (the crossing right of the line from its centre to the corner in
+  rs274's frame), one moved away from its centre at its scaled end; where those circles miss each
+  other, at the point between them on the line through their centres. A corner whose tangents turn by less
   than 1e-6 is no outside corner. Every arc a pass cuts is held to a programmed arc's radius
   tolerance (the profile's own arcs are not held when it is read). Two moved lines in line at a
   corner: "G7X error: Cannot intersect parallel lines".
@@ -207,7 +209,8 @@ def _carrier_radius(prev: Seg, prev_moved: Seg, move: Seg, side: float, d: float
 
 
 def _arc_end_at_corner(arc: Seg, corner: Seg, mirror: float) -> tuple[float, float]:
-    """Where a moved arc ends at an outside corner, as rs274 finds it: where its circle, of its
+    """Where a moved arc ends at an outside corner, as rs274 finds it: moved away from its
+    centre, at its scaled end (where the circles below cross); else where its circle, of its
     moved start's radius, meets the circle about the programmed corner through its moved end
     (the point on the line between their centres where they miss each other, as a
     centre-format arc whose end lies beyond its start's circle makes them: measured at 1000
@@ -222,6 +225,8 @@ def _arc_end_at_corner(arc: Seg, corner: Seg, mirror: float) -> tuple[float, flo
     h2 = r1 * r1 - along * along
     if h2 <= 0:
         return mx, mz
+    if r1 > dist:
+        return arc.x1, arc.z1  # (an arc moved away from its centre ends where it was scaled to)
     # right of (dz, dx) in (z, x) is (dx, -dz), in rs274's frame (``mirror``)
     h = math.sqrt(h2) / dist * mirror
     return mx - h * dz, mz + h * dx
@@ -318,7 +323,8 @@ def _moved_once(profile: Profile, side: float, d: float, axis: tuple[float, floa
         ex, ez = prev.x1, prev.z1
         if outside and prev.kind != LINE:
             ex, ez = _arc_end_at_corner(shifted[i - 1], corner, mirror)
-        gap = (seg.z0 - ez) * gz + (seg.x0 - ex) * gx
+        # (from the arc's end as moved, before it is brought to the corner's circle)
+        gap = (seg.z0 - prev.z1) * gz + (seg.x0 - prev.x1) * gx
         if outside and abs(gap) >= ROUNDED:
             # the moved segments part (an outside corner): an arc about the corner joins them
             out[-1] = prev._replace(x1=ex, z1=ez)
