@@ -38,7 +38,8 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   the arc itself; two circles: at the crossing right of the line from the first centre to the
   second in rs274's frame, which turns Z round for a profile going +Z and X round for one whose
   last point lies below its first, the frame of G72 and of a G70 profile going along X a quarter
-  turn of it; the circles' radii: see ``_crossing``; carriers that just miss meet where they come
+  turn of it, turned round again where it ends at a greater Z than it starts; the circles'
+  radii: see ``_crossing``; carriers that just miss meet where they come
   closest). An outside corner gets an arc about the programmed corner when the moved ends (an
   arc's as scaled) lie 0.01 or more apart along the profile's axis, else it is cut like an inside
   one; an arc before it moved toward its centre ends where its circle meets the circle about the
@@ -297,6 +298,8 @@ def _moved_once(profile: Profile, side: float, d: float, axis: tuple[float, floa
     mirror = _mirror(profile, axis)
     if axis[0] == 0.0:
         mirror = -mirror  # (along X, G72's or G70's: the frame turned a quarter round)
+        if profile[-1].z1 > profile[0].z1:
+            mirror = -mirror  # (and Z turned round too for one that ends at a greater Z)
     shifted = [_move(seg, side, d) for seg in moves]
     out: list[Seg] = []
     for i, seg in enumerate(shifted):
