@@ -38,13 +38,13 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   the arc itself; two circles: at the crossing right of the line from the first centre to the
   second in rs274's frame, which turns Z round for a profile going +Z and X round for one whose
   last point lies below its first, the frame of G72 and of a G70 profile going along X a quarter
-  turn of it, turned round again where it ends at a greater Z than it starts; the circles'
-  radii: see ``_crossing``; carriers that just miss meet where they come
-  closest). An outside corner gets an arc about the programmed corner when the moved ends (an
+  turn of it; the circles' radii: see ``_crossing``; carriers that just miss meet where they
+  come closest). An outside corner gets an arc about the programmed corner when the moved ends (an
   arc's as scaled) lie 0.01 or more apart along the profile's axis, else it is cut like an inside
   one; an arc before it moved toward its centre ends where its circle meets the circle about the
   corner through its scaled end (the crossing right of the line from its centre to the corner in
-  rs274's frame), one moved away from its centre at its scaled end; where those circles miss each
+  rs274's frame, turned round again for a profile along X that ends at a greater Z than it
+  starts), one moved away from its centre at its scaled end; where those circles miss each
   other, at the point between them on the line through their centres. A corner whose tangents turn by less
   than 1e-6 is no outside corner. Every arc a pass cuts is held to a programmed arc's radius
   tolerance (the profile's own arcs are not held when it is read). Two moved lines in line at a
@@ -298,8 +298,9 @@ def _moved_once(profile: Profile, side: float, d: float, axis: tuple[float, floa
     mirror = _mirror(profile, axis)
     if axis[0] == 0.0:
         mirror = -mirror  # (along X, G72's or G70's: the frame turned a quarter round)
-        if profile[-1].z1 > profile[0].z1:
-            mirror = -mirror  # (and Z turned round too for one that ends at a greater Z)
+    end_mirror = mirror
+    if axis[0] == 0.0 and profile[-1].z1 > profile[0].z1:
+        end_mirror = -mirror  # (and Z turned round too for one that ends at a greater Z)
     shifted = [_move(seg, side, d) for seg in moves]
     out: list[Seg] = []
     for i, seg in enumerate(shifted):
@@ -325,7 +326,7 @@ def _moved_once(profile: Profile, side: float, d: float, axis: tuple[float, floa
         outside = turn * side * d < 0 and abs(turn) >= TANGENT
         ex, ez = prev.x1, prev.z1
         if outside and prev.kind != LINE:
-            ex, ez = _arc_end_at_corner(shifted[i - 1], corner, mirror)
+            ex, ez = _arc_end_at_corner(shifted[i - 1], corner, end_mirror)
         # (from the arc's end as moved, before it is brought to the corner's circle)
         gap = (seg.z0 - prev.z1) * gz + (seg.x0 - prev.x1) * gx
         if outside and abs(gap) >= ROUNDED:
