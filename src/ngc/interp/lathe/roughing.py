@@ -321,8 +321,15 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
                 if s * level >= s * deep - EPS:
                     break
                 hits = _level_hits(down, fr, level)
-                # (a level just short of an arc's end moved off its circle at a corner: the end)
-                cb = hits[0] if hits else fr.ab(down.x1, down.z1)[1]
+                if hits:
+                    cb = hits[0]
+                elif abs(level - a0) <= EPS:
+                    # (the level through the start of an arc whose top lies a hair above it,
+                    # its other crossing before the start: the start)
+                    cb = fr.ab(seg.x0, seg.z0)[1]
+                else:
+                    # (a level just short of an arc's end moved off its circle at a corner)
+                    cb = fr.ab(down.x1, down.z1)[1]
                 x, z = fr.xz(level, cb)
                 # down along the profile (from a pocket's top: only where a line of the
                 # profile goes down from it)
