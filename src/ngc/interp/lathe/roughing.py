@@ -378,12 +378,22 @@ def _descent(walk: list[Seg], fr: _Frame, s: float) -> int:
     return n
 
 
+def _touches_at_start(seg: Seg, fr: _Frame, s: float, a0: float) -> bool:
+    """Whether ``seg`` is an arc whose circle's top (its extreme against ``s`` on ``a``) lies no
+    more than ``_NO_CLIMB`` from ``a0``, its start's level: that level only touches it."""
+    if seg.kind == LINE:
+        return False
+    top = fr.ab(*_extreme_point(seg, fr, -s))[0]
+    return abs(top - a0) <= _NO_CLIMB
+
+
 def _bridged(out: Out, fr: _Frame, chain: list[Seg], tags: list[int], pockets_end: int,
              s: float, t: float) -> None:
     """G7x.1's contour pass: each move and corner arc is entered by a feed to its start (of no
     length, as rs274 makes it), and a pocket is bridged by a feed across its top to where the
     level meets the profile again, the walk going on from there (from the next piece where that
-    is a piece's end).  A pocket is entered by that feed of no length only at a corner arc."""
+    is a piece's end).  A pocket is entered by that feed of no length only at a corner arc or an
+    arc whose top is its start."""
     i = 0
     while i < len(chain):
         seg = chain[i]
@@ -391,7 +401,10 @@ def _bridged(out: Out, fr: _Frame, chain: list[Seg], tags: list[int], pockets_en
         deep = _depth(seg, fr, s)[1]
         if i < pockets_end and s * (deep - a0) > EPS:
             exit_at = None
+            touches = _touches_at_start(seg, fr, s, a0)
             for j in range(i, len(chain)):
+                if j == i and touches:
+                    continue  # (its other crossing, a hair past its start, is that tangent)
                 # (past the tangent a level through an arc's top makes at the arc's start)
                 hits = [hb for hb in _level_hits(chain[j], fr, a0) if t * (hb - b0) > _TOUCH]
                 if hits:
@@ -399,7 +412,7 @@ def _bridged(out: Out, fr: _Frame, chain: list[Seg], tags: list[int], pockets_en
                     break
             if exit_at is None:
                 return  # (a pocket the profile never climbs out of: the rest is left uncut)
-            if tags[i] == CORNER:
+            if tags[i] == CORNER or touches:
                 out.feed(seg.x0, seg.z0)
             j, hb = exit_at
             x, z = fr.xz(a0, hb)
