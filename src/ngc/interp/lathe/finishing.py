@@ -41,11 +41,11 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   turn of it; the circles' radii: see ``_crossing``; carriers that just miss meet where they
   come closest). An outside corner gets an arc about the programmed corner when the moved ends (an
   arc's as scaled) lie 0.01 or more apart along the profile's axis, else it is cut like an inside
-  one; an arc before it moved toward its centre ends where its circle meets the circle about the
-  corner through its scaled end (the crossing right of the line from its centre to the corner in
-  rs274's frame, turned round again for a profile along X that ends at a greater Z than it
-  starts), one moved away from its centre at its scaled end; where those circles miss each
-  other, at the point between them on the line through their centres. A corner whose tangents turn by less
+  one; an arc before it ends where its circle (after a line, of its scaled end's radius where
+  that is larger than its start's) meets the circle about the corner through its scaled end
+  (the crossing right of the line from its centre to the corner in rs274's frame, turned round
+  again for a profile along X that ends at a greater Z than it starts); where those circles
+  miss each other or touch, at the point between them on the line through their centres. A corner whose tangents turn by less
   than 1e-6 is no outside corner. Every arc a pass cuts is held to a programmed arc's radius
   tolerance (the profile's own arcs are not held when it is read). Two moved lines in line at a
   corner: "G7X error: Cannot intersect parallel lines".
@@ -209,15 +209,21 @@ def _carrier_radius(prev: Seg, prev_moved: Seg, move: Seg, side: float, d: float
     return 0.0
 
 
-def _arc_end_at_corner(arc: Seg, corner: Seg, mirror: float) -> tuple[float, float]:
-    """Where a moved arc ends at an outside corner, as rs274 finds it: moved away from its
-    centre, at its scaled end (where the circles below cross); else where its circle, of its
-    moved start's radius, meets the circle about the programmed corner through its moved end
+def _arc_end_at_corner(arc: Seg, corner: Seg, mirror: float,
+                       after_line: bool) -> tuple[float, float]:
+    """Where a moved arc ends at an outside corner, as rs274 finds it: where its circle, of its
+    moved start's radius (``after_line``, a line before it: of its scaled end's where that is
+    larger), meets the circle about the programmed corner through its moved end
     (the point on the line between their centres where they miss each other, as a
     centre-format arc whose end lies beyond its start's circle makes them: measured at 1000
     times the size); of two crossings, the one right of the line from the arc's centre to the
     corner in rs274's frame (``mirror``), as two moved arcs cross."""
     r1 = math.hypot(arc.x0 - arc.cx, arc.z0 - arc.cz)
+    if after_line:
+        # (after a line, the circle the line met, of the scaled end's radius as in
+        # ``_carrier_radius``, where that is the larger: it touches the corner's circle at the
+        # scaled end)
+        r1 = max(r1, math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz))
     r2 = math.hypot(arc.x1 - corner.x0, arc.z1 - corner.z0)
     dx, dz = corner.x0 - arc.cx, corner.z0 - arc.cz
     dist = math.hypot(dx, dz)
@@ -226,8 +232,6 @@ def _arc_end_at_corner(arc: Seg, corner: Seg, mirror: float) -> tuple[float, flo
     h2 = r1 * r1 - along * along
     if h2 <= 0:
         return mx, mz
-    if r1 > dist:
-        return arc.x1, arc.z1  # (an arc moved away from its centre ends where it was scaled to)
     # right of (dz, dx) in (z, x) is (dx, -dz), in rs274's frame (``mirror``)
     h = math.sqrt(h2) / dist * mirror
     return mx - h * dz, mz + h * dx
@@ -326,7 +330,8 @@ def _moved_once(profile: Profile, side: float, d: float, axis: tuple[float, floa
         outside = turn * side * d < 0 and abs(turn) >= TANGENT
         ex, ez = prev.x1, prev.z1
         if outside and prev.kind != LINE:
-            ex, ez = _arc_end_at_corner(shifted[i - 1], corner, end_mirror)
+            ex, ez = _arc_end_at_corner(shifted[i - 1], corner, end_mirror,
+                                        i >= 2 and moves[i - 2].kind == LINE)
         # (from the arc's end as moved, before it is brought to the corner's circle)
         gap = (seg.z0 - prev.z1) * gz + (seg.x0 - prev.x1) * gx
         if outside and abs(gap) >= ROUNDED:
