@@ -45,10 +45,10 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   that is larger than its start's) meets the circle about the corner through its scaled end
   (the crossing right of the line from its centre to the corner in rs274's frame, turned round
   again for a profile along X that ends at a greater Z than it starts); where those circles
-  miss each other or touch, at the point between them on the line through their centres. A corner whose tangents turn by less
-  than 1e-6 is no outside corner. Every arc a pass cuts is held to a programmed arc's radius
-  tolerance (the profile's own arcs are not held when it is read). Two moved lines in line at a
-  corner: "G7X error: Cannot intersect parallel lines".
+  miss each other or touch, at the point between them on the line through their centres. A
+  corner whose tangents turn by less than 1e-6 is no outside corner. Every arc a pass cuts is
+  held to a programmed arc's radius tolerance (the profile's own arcs are not held when it is
+  read). Two moved lines in line at a corner: "G7X error: Cannot intersect parallel lines".
 * Each pass: a traverse to ``I``, a traverse to the moved profile's first point, then G1/G2/G3
   feeds along it.  The tool is left at the last pass's end (the profile's end moved E); there is
   no move back.
