@@ -235,7 +235,8 @@ def _ijk_center(
     r1 = math.hypot(s1 - c1, s2 - c2)
     r2 = math.hypot(e1 - c1, e2 - c2)
     zero = RADIUS_TOLERANCE_MM if it.state.metric else RADIUS_TOLERANCE_INCH
-    if r1 < zero or r2 < zero:
+    # (a lathe cycle's profile: a small arc is held when it is cut, one of no radius at once)
+    if (r1 < zero or r2 < zero) and (it.profile is None or r1 == 0.0 or r2 == 0.0):
         where = _arc_where(labels, s1, s2, c1, c2, e1, e2, r1, r2)
         raise NgcSemanticError(f"Zero-radius arc: {where}")
     abs_err = abs(r1 - r2)

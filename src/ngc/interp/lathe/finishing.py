@@ -415,7 +415,9 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
     # a pass that moves the profile gives the zeros of its points the signs of rs274's frame (X
     # turned round for a profile ending below its first point, Z for one going +Z); one that
     # does not keeps the profile's own
-    turned = turning_zeros(profile[-1].x1 < first.x1, axis[0] > 0)
+    # (and Z round too for a profile along X that ends at a greater Z)
+    turned = turning_zeros(profile[-1].x1 < first.x1,
+                           axis[0] > 0 or (axis[0] == 0.0 and profile[-1].z1 > first.z1))
     for k in range(passes, 0, -1):
         out.m.work()  # (P sets how many passes there are)
         dist = (k - 1) * (d - e) / p + e

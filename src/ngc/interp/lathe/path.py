@@ -97,17 +97,26 @@ def _finite(*coords: float) -> None:
 
 def check_radii(x0: float, z0: float, x1: float, z1: float, cx: float, cz: float,
                 metric: bool) -> None:
-    """An arc's radii at its start and end must agree as a programmed centre-format arc's do
-    (g-code.adoc G2/G3; rs274 holds G70's corner arcs to it)."""
+    """An arc's radii at its start and end must agree as a programmed centre-format arc's do,
+    and neither be below the zero-radius tolerance (g-code.adoc G2/G3; rs274 holds G70's corner
+    arcs and a moved profile's arcs to it)."""
     r1 = math.hypot(z0 - cz, x0 - cx)
     r2 = math.hypot(z1 - cz, x1 - cx)
+    zero = motion.RADIUS_TOLERANCE_MM if metric else motion.RADIUS_TOLERANCE_INCH
+    if r1 < zero or r2 < zero:
+        raise NgcSemanticError(f"Zero-radius arc: {_where(x0, z0, x1, z1, cx, cz, r1, r2)}")
     abs_err = abs(r1 - r2)
     tol = motion.CENTER_ARC_TOLERANCE_MM if metric else motion.CENTER_ARC_TOLERANCE_INCH
     if abs_err <= tol:
         return
     rel_err = abs_err / max(r1, r2)
     if abs_err > 100 * tol or rel_err > motion.CENTER_ARC_RELATIVE_TOLERANCE:
-        where = (f"start=(Z{z0:.4f},X{x0:.4f}) center=(Z{cz:.4f},X{cx:.4f}) "
-                 f"end=(Z{z1:.4f},X{x1:.4f}) r1={r1:.4f} r2={r2:.4f}")
         raise NgcSemanticError("Radius to end of arc differs from radius to start: "
-                               f"{where} abs_err={abs_err:.4g} rel_err={rel_err * 100:.4f}%")
+                               f"{_where(x0, z0, x1, z1, cx, cz, r1, r2)} "
+                               f"abs_err={abs_err:.4g} rel_err={rel_err * 100:.4f}%")
+
+
+def _where(x0: float, z0: float, x1: float, z1: float, cx: float, cz: float, r1: float,
+           r2: float) -> str:
+    return (f"start=(Z{z0:.4f},X{x0:.4f}) center=(Z{cz:.4f},X{cx:.4f}) "
+            f"end=(Z{z1:.4f},X{x1:.4f}) r1={r1:.4f} r2={r2:.4f}")

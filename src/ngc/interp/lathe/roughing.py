@@ -392,8 +392,8 @@ def _bridged(out: Out, fr: _Frame, chain: list[Seg], tags: list[int], pockets_en
     """G7x.1's contour pass: each move and corner arc is entered by a feed to its start (of no
     length, as rs274 makes it), and a pocket is bridged by a feed across its top to where the
     level meets the profile again, the walk going on from there (from the next piece where that
-    is a piece's end).  A pocket is entered by that feed of no length only at a corner arc or an
-    arc whose top is its start."""
+    is a piece's end).  A pocket is entered by that feed of no length only at a corner arc or a
+    programmed arc whose top is its start (not the rest of an arc cut at its top)."""
     i = 0
     while i < len(chain):
         seg = chain[i]
@@ -412,7 +412,7 @@ def _bridged(out: Out, fr: _Frame, chain: list[Seg], tags: list[int], pockets_en
                     break
             if exit_at is None:
                 return  # (a pocket the profile never climbs out of: the rest is left uncut)
-            if tags[i] == CORNER or touches:
+            if tags[i] == CORNER or (touches and tags[i] == MOVE):
                 out.feed(seg.x0, seg.z0)
             j, hb = exit_at
             x, z = fr.xz(a0, hb)
