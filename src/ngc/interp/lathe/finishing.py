@@ -38,17 +38,17 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   the arc itself; two circles: at the crossing right of the line from the first centre to the
   second in rs274's frame, which turns Z round for a profile going +Z and X round for one whose
   last point lies below its first, the frame of G72 and of a G70 profile going along X a quarter
-  turn of it; the circles' radii: see ``_crossing``; carriers that just miss meet where they
-  come closest). An outside corner gets an arc about the programmed corner when the moved ends (an
+  turn of it; the circles' radii: see ``_crossing``; carriers that just miss meet where they come
+  closest). An outside corner gets an arc about the programmed corner when the moved ends (an
   arc's as scaled) lie 0.01 or more apart along the profile's axis, else it is cut like an inside
-  one; an arc before it ends where its circle (after a line, of its scaled end's radius where
-  that is larger than its start's) meets the circle about the corner through its scaled end
-  (the crossing right of the line from its centre to the corner in rs274's frame, turned round
-  again for a profile along X that ends at a greater Z than it starts); where those circles
-  miss each other or touch, at the point between them on the line through their centres. A
-  corner whose tangents turn by less than 1e-6 is no outside corner. Every arc a pass cuts is
-  held to a programmed arc's radius tolerance (the profile's own arcs are not held when it is
-  read). Two moved lines in line at a corner: "G7X error: Cannot intersect parallel lines".
+  one; an arc before it ends where its circle (after a line and moved away from its centre, of its
+  scaled end's radius where that is larger than its start's) meets the circle about the corner
+  through its scaled end (the crossing right of the line from its centre to the corner in rs274's
+  frame, turned round again for a profile along X that ends at a greater Z than it starts); where
+  those circles miss each other or touch, at the point between them on the line through their
+  centres. A corner whose tangents turn by less than 1e-6 is no outside corner. Every arc a pass
+  cuts is held to a programmed arc's radius tolerance (the profile's own arcs are not held when it
+  is read). Two moved lines in line at a corner: "G7X error: Cannot intersect parallel lines".
 * Each pass: a traverse to ``I``, a traverse to the moved profile's first point, then G1/G2/G3
   feeds along it.  The tool is left at the last pass's end (the profile's end moved E); there is
   no move back.
@@ -212,21 +212,21 @@ def _carrier_radius(prev: Seg, prev_moved: Seg, move: Seg, side: float, d: float
 def _arc_end_at_corner(arc: Seg, corner: Seg, mirror: float,
                        after_line: bool) -> tuple[float, float]:
     """Where a moved arc ends at an outside corner, as rs274 finds it: where its circle, of its
-    moved start's radius (``after_line``, a line before it: of its scaled end's where that is
-    larger), meets the circle about the programmed corner through its moved end
+    moved start's radius (``after_line``, a line before it, and moved away from its centre: of
+    its scaled end's where that is larger), meets the circle about the programmed corner through its moved end
     (the point on the line between their centres where they miss each other, as a
     centre-format arc whose end lies beyond its start's circle makes them: measured at 1000
     times the size); of two crossings, the one right of the line from the arc's centre to the
     corner in rs274's frame (``mirror``), as two moved arcs cross."""
     r1 = math.hypot(arc.x0 - arc.cx, arc.z0 - arc.cz)
-    if after_line:
-        # (after a line, the circle the line met, of the scaled end's radius as in
-        # ``_carrier_radius``, where that is the larger: it touches the corner's circle at the
-        # scaled end)
-        r1 = max(r1, math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz))
     r2 = math.hypot(arc.x1 - corner.x0, arc.z1 - corner.z0)
     dx, dz = corner.x0 - arc.cx, corner.z0 - arc.cz
     dist = math.hypot(dx, dz)
+    if after_line and r1 > dist:
+        # (an arc after a line, moved away from its centre: the circle the line met, of the
+        # scaled end's radius as in ``_carrier_radius``, where that is the larger; it touches the
+        # corner's circle at the scaled end)
+        r1 = max(r1, math.hypot(arc.x1 - arc.cx, arc.z1 - arc.cz))
     along = (dist * dist + r1 * r1 - r2 * r2) / (2 * dist)
     mx, mz = arc.cx + along * dx / dist, arc.cz + along * dz / dist
     h2 = r1 * r1 - along * along
