@@ -199,8 +199,8 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         sb = fb
         start = fr.xz(sa, sb)
     # Left or right of the profile's direction in (z, x) is toward the start.
-    side = -s * t if not fr.swap else s * t
     way = (t, 0.0) if not fr.swap else (0.0, t)
+    side = -s * t if not fr.swap else pass_side(profile, start, way)
     far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
     if far <= s * sa:
         # nothing beyond the start: the profile moved D to the side G70 would take from the
