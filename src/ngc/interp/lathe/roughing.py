@@ -198,9 +198,9 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
     if t * (sb - fb) > 0:
         sb = fb
         start = fr.xz(sa, sb)
-    # Left or right of the profile's direction in (z, x) is toward the start.
+    # The profile moves D to the side G70 would move it from the start.
     way = (t, 0.0) if not fr.swap else (0.0, t)
-    side = -s * t if not fr.swap else pass_side(profile, start, way)
+    side = pass_side(profile, start, way)
     far = max(s * fr.ab(seg.x1, seg.z1)[0] for seg in rest)
     if far <= s * sa:
         # nothing beyond the start: the profile moved D to the side G70 would take from the
