@@ -207,7 +207,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         # start, fed from the start (G7x.1: each move entered by a feed to its start, pockets
         # bridged)
         out.traverse(*start)
-        moved, corners = moved_with_corners(profile, pass_side(profile, start, way), d, way,
+        moved, corners = moved_with_corners(profile, side, d, way,
                                             roughing=True)
         approach_line = Seg(LINE, start[0], start[1], moved[0].x0, moved[0].z0)
         # (its arcs cut where they turn, as below)
