@@ -274,6 +274,35 @@ def _step(moves: Profile) -> float:
     return h
 
 
+# an arc a step shrinks to this radius or less is gone: its neighbours meet where they cross
+# (rs274 drops a quarter circle moved to r 0.001 and cuts one moved to r 0.0012, which its
+# zero-radius tolerance then refuses)
+_VANISHED = 0.001 + 1e-9
+
+
+def _without_vanished(moves: Profile, mirror: float) -> Profile:
+    """``moves`` without the arcs shrunk to ``_VANISHED`` or less (but the first and the last),
+    the moves on either side cut back or out to where their carriers cross; an arc whose
+    neighbours do not cross stays."""
+    out = list(moves)
+    i = 1
+    while i < len(out) - 1:
+        seg = out[i]
+        if seg.kind == LINE or math.hypot(seg.x0 - seg.cx, seg.z0 - seg.cz) > _VANISHED:
+            i += 1
+            continue
+        prev, nxt = out[i - 1], out[i + 1]
+        arc = prev if prev.kind != LINE else nxt
+        r = math.hypot(arc.x0 - arc.cx, arc.z0 - arc.cz) if arc.kind != LINE else 0.0
+        try:
+            px, pz = _crossing(prev, nxt, mirror, r)
+        except NgcSemanticError:
+            i += 1
+            continue
+        out[i - 1:i + 2] = [prev._replace(x1=px, z1=pz), nxt._replace(x0=px, z0=pz)]
+    return out
+
+
 def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
                        roughing: bool = False) -> tuple[list[Seg], set[int]]:
     """``moved``, and the indices of the arcs it put in to round outside corners.  The profile
@@ -288,6 +317,7 @@ def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[floa
         if not h > 1e-9 or k == _MAX_STEPS:
             h = left  # (the rest at once)
         current = [current[0], *_moved_once(current, side, sign * h, axis, roughing, k == 0)]
+        current = [current[0], *_without_vanished(current[1:], _mirror(current, axis))]
         left -= h
         if left <= 0.0:
             break
