@@ -30,7 +30,9 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   step left it (the arcs rounding corners included).  So an outside corner whose moved ends part
   by less than 0.01 in each step stays sharp (small distances beside short moves), and a corner
   that turns the other way partway is rounded about where it was then (a fillet of the rest of
-  the distance about a moved corner, where rs274 prints "Oops").  Found with G70 on profiles of
+  the distance about a moved corner, where rs274 prints "Oops").  An arc a step shrinks to a
+  radius of 0.001 or less is gone, its neighbours meeting where they cross (one left a little
+  larger is cut, and refused as a "Zero-radius arc").  Found with G70 on profiles of
   two arcs, of a fillet after an arc, and of short lines: the fillet's centre stays put as D
   grows, at the distance of half the smallest radius or chord.
 * Corners: an inside corner is cut back to where the moved carriers cross (a line and a circle: at
