@@ -108,13 +108,13 @@ def test_segments_are_made_as_they_are_taken() -> None:
     taking 20,000 of them holds one at a time."""
     tracemalloc.start()
     try:
-        started = time.monotonic()
+        started = time.process_time()  # (CPU time: a busy machine does not make it slow)
         taken = sum(1 for _ in itertools.islice(run("move PZ 0 360000000 1 0"), 20_000))
         _, peak = tracemalloc.get_traced_memory()
     finally:
         tracemalloc.stop()
     assert taken == 20_000
-    assert time.monotonic() - started < 20.0
+    assert time.process_time() - started < 20.0
     assert peak < 2_000_000
 
 
