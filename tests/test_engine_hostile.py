@@ -70,10 +70,10 @@ def test_each_peck_counts_one() -> None:
     "F10\nG83 Z-10 R0 Q[10**-300]",  # pecks that no longer go deeper
 ])
 def test_a_move_past_the_budget_stops_before_its_first_segment(text: str) -> None:
-    started = time.monotonic()
+    started = time.process_time()  # (CPU time: a busy machine does not make it slow)
     with pytest.raises(NgcError, match="Work limit reached: 1000 ") as info:
         ops("G21\n" + text, 1000)
-    assert time.monotonic() - started < 2.0
+    assert time.process_time() - started < 2.0
     assert info.value.line == text.count("\n") + 2
 
 

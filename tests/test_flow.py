@@ -57,10 +57,10 @@ FAN_OUT = (
 
 
 def test_subroutine_calls_count_against_the_work_budget() -> None:
-    started = time.monotonic()
+    started = time.process_time()  # (CPU time: a busy machine does not make it slow)
     with pytest.raises(NgcRuntimeError, match="Work limit reached: 1000 loop") as caught:
         run(FAN_OUT, max_iterations=1000)
-    assert time.monotonic() - started < 2.0
+    assert time.process_time() - started < 2.0
     assert caught.value.source == "o100 call [#1+1]"
 
 

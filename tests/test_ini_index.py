@@ -106,12 +106,12 @@ def test_lookups_do_not_search_the_file_again(tmp_path: Path) -> None:
     # name (minutes); the index answers them all at once (well within a second on any machine)
     path = tmp_path / "big.ini"
     path.write_text(big_ini(160_000))
-    started = time.perf_counter()
+    started = time.process_time()  # (CPU time: a busy machine does not make it slow)
     ini = Ini.read(path)
     for n in range(0, 160_000, 160):
         assert ini.get("BIG", f"KEY_{n}") == str(n)
         assert ini.get("AXIS_X", "MAX_VELOCITY") == "1"
-    assert time.perf_counter() - started < 20.0
+    assert time.process_time() - started < 20.0
 
 
 def test_reading_takes_little_more_memory_than_the_text(tmp_path: Path) -> None:

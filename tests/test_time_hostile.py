@@ -177,9 +177,9 @@ DAY = "G1 X100000000 F6000\nG4 P1\nG4 P1\nM2 %\n"  # some 11.6 days of motion
 def test_a_trajectory_past_the_row_limit_stops_at_once(capsys: pytest.CaptureFixture[str],
                                                        tmp_path: Path) -> None:
     path = write(tmp_path, "p.ngc", DAY)
-    started = time.perf_counter()
+    started = time.process_time()  # (CPU time: a busy machine does not make it slow)
     code, out, err = run(capsys, "time", "--trajectory", str(tmp_path / "t.csv"), path)
-    assert time.perf_counter() - started < 30.0  # (it wrote rows for minutes)
+    assert time.process_time() - started < 30.0  # (it wrote rows for minutes)
     assert (code, out) == (2, "")
     assert err.startswith(f"ngc time: the trajectory would have more than {DEFAULT_MAX_ROWS} "
                           "rows (a row every 0.001 s up to ")
