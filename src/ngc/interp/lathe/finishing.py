@@ -32,7 +32,9 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
   that turns the other way partway is rounded about where it was then (a fillet of the rest of
   the distance about a moved corner, where rs274 prints "Oops").  An arc a step shrinks to a
   radius of 0.001 or less is gone, its neighbours meeting where they cross (one left a little
-  larger is cut, and refused as a "Zero-radius arc").  Found with G70 on profiles of
+  larger is cut, and refused as a "Zero-radius arc"); a last move it shrinks to less than 0.001
+  from end to end just goes, as when the profile is read (so a last line shorter than D stops
+  the line before it where it vanished).  Found with G70 on profiles of
   two arcs, of a fillet after an arc, and of short lines: the fillet's centre stays put as D
   grows, at the distance of half the smallest radius or chord.
 * Corners: an inside corner is cut back to where the moved carriers cross (a line and a circle: at
@@ -276,6 +278,8 @@ def _step(moves: Profile) -> float:
     return h
 
 
+# a last move a step shrinks to less than this from end to end is gone (as ``drop_short``)
+_SHORT = 1e-3
 # an arc a step shrinks to this radius or less is gone: its neighbours meet where they cross
 # (rs274 drops a quarter circle moved to r 0.001 and cuts one moved to r 0.0012, which its
 # zero-radius tolerance then refuses)
@@ -283,10 +287,14 @@ _VANISHED = 0.001 + 1e-9
 
 
 def _without_vanished(moves: Profile, mirror: float) -> Profile:
-    """``moves`` without the arcs shrunk to ``_VANISHED`` or less (but the first and the last),
+    """``moves`` without a last move shrunk to less than ``_SHORT``, and without the arcs shrunk
+    to ``_VANISHED`` or less (but the first and the last),
     the moves on either side cut back or out to where their carriers cross; an arc whose
     neighbours do not cross stays."""
     out = list(moves)
+    last = out[-1]
+    if len(out) > 1 and math.hypot(last.x1 - last.x0, last.z1 - last.z0) < _SHORT:
+        out.pop()  # (a last move shrunk to less than 0.001 just goes, as when it is read)
     i = 1
     while i < len(out) - 1:
         seg = out[i]
