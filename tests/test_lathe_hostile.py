@@ -4,6 +4,7 @@ program error (exit 0 or 1), never exit 70."""
 from __future__ import annotations
 
 import math
+import time
 from pathlib import Path
 
 import pytest
@@ -89,3 +90,40 @@ def test_check_says_a_length_past_a_doubles_range(
     assert code == 0
     assert "rapid length: past a double's range (mm), feed length: 0.0000 mm" in out
     assert "inf" not in out and "nan" not in out
+    code, out, _ = run(capsys, "check", "--format", "json", path)
+    assert code == 0 and '"rapid_length": null' in out
+
+
+def test_crossing_of_two_arcs_about_one_centre_is_a_program_error() -> None:
+    # (two moved arcs of one centre met in a mutated job: a division by zero)
+    a = Seg(CW, 3.0, 0.0, 2.0, -1.0, 2.0, 0.0)
+    b = Seg(CW, 2.0, -1.0, 1.0, 0.0, 2.0, 0.0)
+    with pytest.raises(NgcSemanticError, match="Not monotonic"):
+        _crossing(a, b, 1.0)
+
+
+def test_offset_steps_count_against_the_work_budget(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    # a billion G70 passes, each moving a filleted profile in up to 200 steps: the steps count,
+    # so the budget stops it at once rather than after 2000 passes of 200 steps
+    path = write(tmp_path, "passes.ngc", "G18 G90 G40 G21 F200\nG0 X40 Z20\no100 sub\n"
+                 "G0 X4.3 Z6.3\nG1 X2.79 Z5.83 A0.15\nG1 X0.04 Z4.34\nG1 X0.04 Z3.4892\n"
+                 "o100 endsub\nG70 Q100 X5.1 Z1.5 D0.5 P1000000000\nM2\n")
+    started = time.process_time()
+    code, _, err = run(capsys, "canon", "--max-iterations", "2000", path)
+    assert code == 1 and "Work limit reached: 2000" in err
+    assert time.process_time() - started < 1.0
+
+
+def test_check_record_has_null_for_a_length_past_a_doubles_range() -> None:
+    import io
+    import json
+
+    from ngc import report
+    from ngc.interp.interpreter import Interpreter
+
+    result = report.check_lines(io.StringIO("G0 X[EXP[709]]\nG0 X[0-EXP[709]]\nM2\n"), "far.ngc",
+                                lambda sink: Interpreter(sink))
+    record = report.record(result)
+    assert record["summary"]["rapid_length"] is None  # type: ignore[index]
+    json.loads(json.dumps(record), parse_constant=lambda name: pytest.fail(name))

@@ -248,3 +248,16 @@ def test_a_stop_just_past_whole_servo_periods_keeps_the_moves_time(period: float
     for parts in (result.by_kind, result.by_tool, dict(result.by_line.items())):
         assert math.fsum(parts.values()) <= result.total_s
     assert result.total_s == pytest.approx(1.0, abs=1e-6)
+
+
+def test_arc_tolerance_at_a_join_that_does_not_turn(monkeypatch: pytest.MonkeyPatch) -> None:
+    """An arc curving into a join whose tangents do not turn (theta 0, found by the lathe soak on
+    a G7 G64 P0.01 job): the blend's tolerance stays as it is, not a division by zero."""
+    from types import SimpleNamespace
+
+    from ngc.planner import arcjoin
+
+    arc = SimpleNamespace(sweep=0.5)
+    monkeypatch.setattr(arcjoin, "arcs_at", lambda prev, seg: iter([(arc, True, True)]))
+    prev = SimpleNamespace(tolerance=0.01)
+    assert arcjoin.arc_tolerance(prev, prev, 0.0) == 0.01  # type: ignore[arg-type]

@@ -511,6 +511,11 @@ def error_record(error: NgcError) -> dict[str, object]:
             "column": column, "source": error.source}
 
 
+def _finite_or_none(value: float) -> float | None:
+    """A length for JSON: ``None`` (null) for one past a double's range (as the text says)."""
+    return value if math.isfinite(value) else None
+
+
 def record(result: CheckResult) -> dict[str, object]:
     """``ngc check --format json``'s object for one file (see ``README.md``)."""
     s = result.summary
@@ -519,7 +524,8 @@ def record(result: CheckResult) -> dict[str, object]:
         extents = {"low": list(s.extents.low), "high": list(s.extents.high)}
     summary = {
         "units": s.units, "moves": s.moves, "traverses": s.traverses, "feeds": s.feeds,
-        "arcs": s.arcs, "rapid_length": s.rapid_length, "feed_length": s.feed_length,
+        "arcs": s.arcs, "rapid_length": _finite_or_none(s.rapid_length),
+        "feed_length": _finite_or_none(s.feed_length),
         "extents": extents, "mixed_units": s.mixed_units,
     }  # fmt: skip
     return {

@@ -171,6 +171,8 @@ def arc_tolerance(prev: Segment, seg: Segment, theta: float) -> float:
     if extra <= 0.0:
         return tolerance
     c0 = math.cos(0.5 * theta)
+    if c0 >= 1.0:
+        return tolerance  # (no turn at the join: nothing to size)
     c1 = math.cos(min(0.5 * (theta + extra), 0.5 * math.pi - 1e-6))
     return tolerance * (c1 / (1.0 - c1)) / (c0 / (1.0 - c0))
 

@@ -63,6 +63,7 @@ profile's first point, the end of the subroutine's first move, ``L`` its last po
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 from ...errors import NgcSemanticError
 from .offset import EPS, _shift, intersections, tangent
@@ -183,6 +184,8 @@ def _crossing(a: Seg, b: Seg, mirror: float, r_arc: float = 0.0) -> tuple[float,
     r2 = math.hypot(b.x0 - b.cx, b.z0 - b.cz)
     dz, dx = b.cz - a.cz, b.cx - a.cx
     dist = math.hypot(dz, dx)
+    if dist == 0.0:
+        raise NgcSemanticError(NOT_MONOTONIC)  # (two arcs about one centre do not cross)
     along = (dist * dist + r1 * r1 - r2 * r2) / (2 * dist)
     mz, mx = a.cz + along * dz / dist, a.cx + along * dx / dist
     h2 = r1 * r1 - along * along
@@ -252,14 +255,14 @@ def _mirror(profile: Profile, axis: tuple[float, float]) -> float:
 
 
 def moved(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
-          roughing: bool = False) -> list[Seg]:
+          roughing: bool = False, work: Callable[[], None] | None = None) -> list[Seg]:
     """The profile after ``F`` moved ``d`` to ``side``, its corners joined (``axis``: the unit
     (z, x) direction the profile goes along).  G70 measures an outside corner's gap along
     ``axis`` and refuses two moved lines in line; for G71/G72 (``roughing``) the gap is measured
     along the axis the passes cut along (Z for G71, X for G72: ``axis`` either way round),
     slanted lines in line join, and a line shorter than ``d`` that turns round between its
     corners is left out."""
-    return moved_with_corners(profile, side, d, axis, roughing=roughing)[0]
+    return moved_with_corners(profile, side, d, axis, roughing=roughing, work=work)[0]
 
 
 _MAX_STEPS = 200  # then the rest at once (an arc shrinking by half its radius each step)
@@ -314,15 +317,19 @@ def _without_vanished(moves: Profile, mirror: float) -> Profile:
 
 
 def moved_with_corners(profile: Profile, side: float, d: float, axis: tuple[float, float], *,
-                       roughing: bool = False) -> tuple[list[Seg], set[int]]:
+                       roughing: bool = False, work: Callable[[], None] | None = None
+                       ) -> tuple[list[Seg], set[int]]:
     """``moved``, and the indices of the arcs it put in to round outside corners.  The profile
-    moves in steps (``_step``), its corners joined after each."""
+    moves in steps (``_step``), its corners joined after each; ``work`` is called for each step
+    (the run's work budget: the profile's numbers set how many there are)."""
     if d == 0.0:
         return list(profile[1:]), set()
     current = list(profile)
     left = abs(d)
     sign = 1.0 if d > 0 else -1.0
     for k in range(_MAX_STEPS + 1):
+        if work is not None:
+            work()
         h = min(left, _step(current[1:]))
         if not h > 1e-9 or k == _MAX_STEPS:
             h = left  # (the rest at once)
@@ -461,7 +468,7 @@ def g70(out: Out, profile: Profile, start: tuple[float, float], d: float, e: flo
     for k in range(passes, 0, -1):
         out.m.work()  # (P sets how many passes there are)
         dist = (k - 1) * (d - e) / p + e
-        path = moved(profile, side, dist, axis)
+        path = moved(profile, side, dist, axis, work=out.m.work)
         out.zeros = None  # (the entry is not in the frame)
         out.traverse(*entry)
         out.zeros = turned if dist else None

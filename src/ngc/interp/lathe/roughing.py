@@ -207,8 +207,8 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         # start, fed from the start (G7x.1: each move entered by a feed to its start, pockets
         # bridged)
         out.traverse(*start)
-        moved, corners = moved_with_corners(profile, side, d, way,
-                                            roughing=True)
+        moved, corners = moved_with_corners(profile, side, d, way, roughing=True,
+                                            work=out.m.work)
         approach_line = Seg(LINE, start[0], start[1], moved[0].x0, moved[0].z0)
         # (its arcs cut where they turn, as below)
         walk, tags = _split(moved, corners, fr, s)
@@ -219,7 +219,7 @@ def rough(out: Out, profile: list[Seg], start: tuple[float, float], code: int, d
         for seg in [approach_line, *walk]:
             _emit(out, seg)
         return
-    moved, corners = moved_with_corners(profile, side, d, way, roughing=True)
+    moved, corners = moved_with_corners(profile, side, d, way, roughing=True, work=out.m.work)
     first, last = moved[0], moved[-1]
     p0a = fr.ab(first.x0, first.z0)[0]
     la, lb = fr.ab(last.x1, last.z1)
