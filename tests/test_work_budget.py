@@ -38,7 +38,8 @@ COUNTED = {
     "g73-pecks": "G17 G21 F100\nG0 Z1\nG73 X1 R0 Z-{n} Q1\nG80\nM2\n",
     "g76-passes": SPINDLE + "G0 X10 Z2\nG76 P1.5 Z-5 I-0.5 J1 K{n}.5 H0\nM2\n",
     "g76-spring-passes": SPINDLE + "G0 X10 Z2\nG76 P1.5 Z-5 I-0.5 J1 K1.5 H{n}\nM2\n",
-    "g70-passes": SPINDLE + PROFILE + "G0 X10 Z2\nG70 Q100 P{n} D1\nM2\n",
+    # (D0: no pass moves the profile, whose steps count too: see below)
+    "g70-passes": SPINDLE + PROFILE + "G0 X10 Z2\nG70 Q100 P{n} D0\nM2\n",
     "g71-levels": SPINDLE + PROFILE + "G0 X{n}0 Z2\nG71 Q100 I10\nM2\n",
 }
 
@@ -79,3 +80,11 @@ def test_runaway_counts_end_with_the_work_limit(program: str) -> None:
         run(program, max_iterations=1000)
     assert time.process_time() - started < 5.0
     assert caught.value.line is not None
+
+
+def test_offset_steps_count() -> None:
+    """Each step that moves a G7x profile by its D counts against the budget (how many there are
+    depends on the profile's numbers: half its shortest move or smallest radius at a time)."""
+    still = SPINDLE + PROFILE + "G0 X10 Z2\nG70 Q100 P1 D0 E0\nM2\n"
+    moved = SPINDLE + PROFILE + "G0 X10 Z2\nG70 Q100 P1 D1 E1\nM2\n"
+    assert needs(moved) > needs(still)
