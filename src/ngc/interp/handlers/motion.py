@@ -237,14 +237,14 @@ def _ijk_center(
     zero = RADIUS_TOLERANCE_MM if it.state.metric else RADIUS_TOLERANCE_INCH
     # (a lathe cycle's profile: a small arc is held when it is cut, one of no radius at once)
     if (r1 < zero or r2 < zero) and (it.profile is None or r1 == 0.0 or r2 == 0.0):
-        where = _arc_where(labels, s1, s2, c1, c2, e1, e2, r1, r2)
+        where = arc_where(labels, s1, s2, c1, c2, e1, e2, r1, r2)
         raise NgcSemanticError(f"Zero-radius arc: {where}")
     abs_err = abs(r1 - r2)
     tol = CENTER_ARC_TOLERANCE_MM if it.state.metric else CENTER_ARC_TOLERANCE_INCH
     if abs_err > tol and it.profile is None:  # (a lathe cycle's profile: held when it is cut)
         rel_err = abs_err / max(r1, r2)
         if abs_err > 100 * tol or rel_err > CENTER_ARC_RELATIVE_TOLERANCE:
-            where = _arc_where(labels, s1, s2, c1, c2, e1, e2, r1, r2)
+            where = arc_where(labels, s1, s2, c1, c2, e1, e2, r1, r2)
             raise NgcSemanticError(
                 "Radius to end of arc differs from radius to start: "
                 f"{where} abs_err={abs_err:.4g} rel_err={rel_err * 100:.4f}%"
@@ -252,7 +252,7 @@ def _ijk_center(
     return c1, c2
 
 
-def _arc_where(
+def arc_where(
     labels: str, s1: float, s2: float, c1: float, c2: float, e1: float, e2: float,
     r1: float, r2: float,
 ) -> str:

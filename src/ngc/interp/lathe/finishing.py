@@ -66,6 +66,7 @@ import math
 from collections.abc import Callable
 
 from ...errors import NgcSemanticError
+from .corners import _SHORT
 from .offset import EPS, _shift, intersections, tangent
 from .path import Out
 from .profile import CCW, CW, LINE, NOT_MONOTONIC, PARALLEL, Profile, Seg, steps, within
@@ -281,8 +282,6 @@ def _step(moves: Profile) -> float:
     return h
 
 
-# a last move a step shrinks to less than this from end to end is gone (as ``drop_short``)
-_SHORT = 1e-3
 # an arc a step shrinks to this radius or less is gone: its neighbours meet where they cross
 # (rs274 drops a quarter circle moved to r 0.001 and cuts one moved to r 0.0012, which its
 # zero-radius tolerance then refuses)
@@ -290,10 +289,10 @@ _VANISHED = 0.001 + 1e-9
 
 
 def _without_vanished(moves: Profile, mirror: float) -> Profile:
-    """``moves`` without a last move shrunk to less than ``_SHORT``, and without the arcs shrunk
-    to ``_VANISHED`` or less (but the first and the last),
-    the moves on either side cut back or out to where their carriers cross; an arc whose
-    neighbours do not cross stays."""
+    """``moves`` without a last move shrunk to less than ``_SHORT`` (as ``drop_short``), and
+    without the arcs shrunk to ``_VANISHED`` or less (but the first and the last), the moves on
+    either side cut back or out to where their carriers cross; an arc whose neighbours do not
+    cross stays."""
     out = list(moves)
     last = out[-1]
     if len(out) > 1 and math.hypot(last.x1 - last.x0, last.z1 - last.z0) < _SHORT:

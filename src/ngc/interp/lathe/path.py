@@ -118,5 +118,5 @@ def check_radii(x0: float, z0: float, x1: float, z1: float, cx: float, cz: float
 
 def _where(x0: float, z0: float, x1: float, z1: float, cx: float, cz: float, r1: float,
            r2: float) -> str:
-    return (f"start=(Z{z0:.4f},X{x0:.4f}) center=(Z{cz:.4f},X{cx:.4f}) "
-            f"end=(Z{z1:.4f},X{x1:.4f}) r1={r1:.4f} r2={r2:.4f}")
+    """The arc's points as rs274's arc errors show them, in the XZ plane (Z first)."""
+    return motion.arc_where("ZX", z0, x0, cz, cx, z1, x1, r1, r2)
