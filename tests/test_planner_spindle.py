@@ -76,7 +76,7 @@ def test_a_feed_that_works_out_to_zero_is_refused_with_its_line() -> None:
     from ngc.planner.moves import NoSpeed, PathSink
 
     sink = PathSink(DEFAULT_MACHINE, Planner(DEFAULT_MACHINE, lambda seg: None),
-                    lambda kind, seconds, line: None)
+                    lambda kind, seconds, line: None).toolpath
     sink.emit(ops.SetFeedRate(0.0), "", 3)
     with pytest.raises(NoSpeed) as caught:
         sink.emit(ops.StraightFeed(10.0, 0.0, 0.0, 0.0, 0.0, 0.0), "", 4)

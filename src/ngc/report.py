@@ -1,28 +1,28 @@
 """What a program does, summed up from its canonical operations: move counts, rapid and feed
 path lengths, and the extents of the toolpath (``ngc check``).
 
-The summary is a consumer of canon (DESIGN.md, "Data flow"): it never looks into the interpreter,
-it follows the current point the way a canon implementation does.  Canon speaks program units and
-program coordinates, so the current point is re-expressed whenever the units (USE_LENGTH_UNITS) or
-the work offsets (SET_G5X_OFFSET, SET_G92_OFFSET) change.  Lengths and extents are kept in the
-current program units and converted, with the current point, when the units change, so a program
-that never changes units is summed without any conversion (and its rounding noise).  An XY
-rotation (G10 L2 R) is not followed: extents are in the program's own, unrotated coordinates.
+The summary reads the toolpath (:mod:`ngc.toolpath`, DESIGN.md "Data flow"): each move's start
+and end in program coordinates and units, which the toolpath re-expresses when the units, the
+offsets, the rotation or the tool length offset change.  Lengths and extents are kept in the
+current program units and converted when the units change, so a program that never changes units
+is summed without any conversion (and its rounding noise).  Extents are in program coordinates.
 """
 
 from __future__ import annotations
 
 import math
 import os
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Literal, overload
+from typing import TYPE_CHECKING, Any, Literal, overload
 
 from .canon import ops
 from .canon.ops import Op, Sink
 from .errors import NgcError
 from .interp.interpreter import Interpreter
 from .interp.source import ProgramReader, open_text_program
+from .toolpath.frame import Pos
+from .toolpath.tracker import RAPID, ArcMove, Toolpath
 
 if TYPE_CHECKING:
     from .engine import Setup as EngineSetup
@@ -30,13 +30,6 @@ if TYPE_CHECKING:
 
 MM_PER_UNIT = {"CANON_UNITS_MM": 1.0, "CANON_UNITS_INCHES": 25.4, "CANON_UNITS_CM": 10.0}
 UNIT_NAMES = {"CANON_UNITS_MM": "mm", "CANON_UNITS_INCHES": "inch", "CANON_UNITS_CM": "cm"}
-
-# SELECT_PLANE -> where ARC_FEED's (first, second, axis) coordinates sit in (x, y, z).
-PLANE_AXES = {
-    "CANON_PLANE_XY": (0, 1, 2),
-    "CANON_PLANE_XZ": (2, 0, 1),
-    "CANON_PLANE_YZ": (1, 2, 0),
-}
 
 TAU = 2.0 * math.pi
 QUADRANT_ANGLES = (0.0, 0.5 * math.pi, math.pi, 1.5 * math.pi)
@@ -78,51 +71,42 @@ class Summary:
 
 
 class Summarizer:
-    """A canon sink that keeps only a running summary (constant memory, any program length)."""
+    """A reader of the toolpath that keeps only a running summary (constant memory, any
+    program length).  It is a canon sink too: ``emit`` (and ``emit_move``) hand operations to
+    its :class:`~ngc.toolpath.tracker.Toolpath`, ``self.toolpath``, whose moves it sums in
+    program coordinates and units."""
 
     __slots__ = (
         "_arcs",
-        "_axes",
         "_feed_length",
         "_feeds",
-        "_handlers",
         "_high",
         "_low",
         "_mm_per_unit",
-        "_offsets",
-        "_pos",
         "_rapid_length",
         "_traverses",
         "_units",
         "_units_changed",
+        "toolpath",
     )
 
     def __init__(self) -> None:
-        self._pos = [0.0, 0.0, 0.0]  # current point, program units and coordinates
-        self._offsets = {"g5x": (0.0, 0.0, 0.0), "g92": (0.0, 0.0, 0.0)}  # program units
+        self.toolpath = Toolpath(self)
         self._units = "CANON_UNITS_MM"
         self._units_changed = False  # after something moved
         self._mm_per_unit = 1.0
-        self._axes = PLANE_AXES["CANON_PLANE_XY"]
         self._traverses = self._feeds = self._arcs = 0
         # in current program units, like the current point
         self._rapid_length = self._feed_length = 0.0
         self._low = [math.inf] * 3
         self._high = [-math.inf] * 3
-        self._handlers: dict[type, Callable[[Op], None]] = {
-            ops.StraightTraverse: self._traverse,
-            ops.StraightFeed: self._feed,
-            ops.StraightProbe: self._probe,
-            ops.ArcFeed: self._arc,
-            ops.SelectPlane: self._plane,
-            ops.UseLengthUnits: self._length_units,
-            ops.SetG5xOffset: self._g5x,
-            ops.SetG92Offset: self._g92,
-        }
 
     # -- the sink protocol ------------------------------------------------------------------------
     def emit(self, op: Op, label: str, line: int) -> None:
-        self.add(op)
+        self.toolpath.emit(op, label, line)
+
+    def emit_move(self, kind: type, fields: Sequence[Any], label: str, line: int) -> None:
+        self.toolpath.emit_move(kind, fields, label, line)
 
     def print_text(self, text: str) -> None:
         """``(PRINT,...)`` output does not move the machine."""
@@ -132,9 +116,7 @@ class Summarizer:
 
     def add(self, op: Op) -> None:
         """Follow one canonical operation."""
-        handler = self._handlers.get(type(op))
-        if handler is not None:
-            handler(op)
+        self.toolpath.emit(op, "", 0)
 
     def summary(self) -> Summary:
         """The summary of everything seen so far, in the current units."""
@@ -155,21 +137,57 @@ class Summarizer:
             mixed_units=self._units_changed,
         )
 
-    # -- modes and offsets ------------------------------------------------------------------------
-    def _plane(self, op: Op) -> None:
-        assert isinstance(op, ops.SelectPlane)
-        self._axes = PLANE_AXES.get(op.plane, self._axes)
+    # -- the toolpath's consumer protocol ---------------------------------------------------------
+    def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
+        """A straight move, summed in program coordinates (a probe counts as a feed to its
+        programmed point: where it stops is not in the call)."""
+        tp = self.toolpath
+        p, q = tp.prog, tp.prog_end
+        length = math.dist((p[0], p[1], p[2]), (q[0], q[1], q[2]))
+        if kind is RAPID:
+            self._traverses += 1
+            self._rapid_length += length
+        else:
+            self._feeds += 1
+            self._feed_length += length
+        self._include(q)
 
-    def _length_units(self, op: Op) -> None:
-        """The same physical point, re-expressed in the new units (as rs274's canon does); the
-        totals so far follow."""
-        assert isinstance(op, ops.UseLengthUnits)
+    def arc(self, arc: ArcMove, line: int) -> None:
+        self._arcs += 1
+        first, second, axis = self.toolpath.plane
+        op, pos = arc.op, arc.prog_start
+        shape = Arc(
+            start=(pos[first], pos[second], pos[axis]),
+            end=(op.first_end, op.second_end, op.axis_end_point),
+            center=(op.first_axis, op.second_axis),
+            rotation=op.rotation,
+        )
+        for p in shape.extremes():
+            xyz = [0.0, 0.0, 0.0]
+            xyz[first], xyz[second], xyz[axis] = p
+            self._include(xyz)
+        self._include(self.toolpath.prog_end)
+        self._feed_length += shape.length()
+
+    def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
+        """A curve is not counted (its end is where the next move starts)."""
+
+    def tap(self, start: Pos, bottom: Pos, line: int) -> None:
+        """A rigid tap is not counted (it ends where it started)."""
+
+    def other(self, op: Op, line: int) -> None:
+        if type(op) is ops.UseLengthUnits:
+            self._length_units(op)
+
+    def finish(self) -> None:
+        """Nothing is held back."""
+
+    def _length_units(self, op: ops.UseLengthUnits) -> None:
+        """The totals so far in the new units (the toolpath re-expresses the current point)."""
         new_mm_per_unit = MM_PER_UNIT.get(op.units, 1.0)
         ratio = self._mm_per_unit / new_mm_per_unit
         if ratio != 1.0:
             self._units_changed |= self._traverses + self._feeds + self._arcs > 0
-            self._pos = [v * ratio for v in self._pos]
-            self._offsets = {k: _scaled(v, ratio) for k, v in self._offsets.items()}
             self._low = [v * ratio for v in self._low]
             self._high = [v * ratio for v in self._high]
             self._rapid_length *= ratio
@@ -177,77 +195,21 @@ class Summarizer:
         self._mm_per_unit = new_mm_per_unit
         self._units = op.units
 
-    def _g5x(self, op: Op) -> None:
-        assert isinstance(op, ops.SetG5xOffset)
-        self._shift_origin("g5x", (op.x, op.y, op.z))
-
-    def _g92(self, op: Op) -> None:
-        assert isinstance(op, ops.SetG92Offset)
-        self._shift_origin("g92", (op.x, op.y, op.z))
-
-    def _shift_origin(self, which: str, new: Point) -> None:
-        """The tool stays put while the origin moves, so its program coordinates change."""
-        old = self._offsets[which]
-        self._pos = [self._pos[i] + old[i] - new[i] for i in range(3)]
-        self._offsets[which] = new
-
-    # -- motion -----------------------------------------------------------------------------------
-    def _traverse(self, op: Op) -> None:
-        assert isinstance(op, ops.StraightTraverse)
-        self._traverses += 1
-        self._rapid_length += self._line_to((op.x, op.y, op.z))
-
-    def _feed(self, op: Op) -> None:
-        assert isinstance(op, ops.StraightFeed)
-        self._feeds += 1
-        self._feed_length += self._line_to((op.x, op.y, op.z))
-
-    def _probe(self, op: Op) -> None:
-        """A straight probe counts as a feed move to its programmed point (where it stops is not
-        in the call)."""
-        assert isinstance(op, ops.StraightProbe)
-        self._feeds += 1
-        self._feed_length += self._line_to((op.x, op.y, op.z))
-
-    def _line_to(self, end: Point) -> float:
-        """Move in a straight line; returns its length."""
-        start = self._pos
-        self._include(end)
-        self._pos = list(end)
-        return math.dist(start, end)
-
-    def _arc(self, op: Op) -> None:
-        assert isinstance(op, ops.ArcFeed)
-        self._arcs += 1
-        first, second, axis = self._axes
-        pos = self._pos
-        arc = Arc(
-            start=(pos[first], pos[second], pos[axis]),
-            end=(op.first_end, op.second_end, op.axis_end_point),
-            center=(op.first_axis, op.second_axis),
-            rotation=op.rotation,
-        )
-        for p in arc.extremes():
-            xyz = [0.0, 0.0, 0.0]
-            xyz[first], xyz[second], xyz[axis] = p
-            self._include(xyz)
-        end = [0.0, 0.0, 0.0]
-        end[first], end[second], end[axis] = arc.end
-        self._include(end)
-        self._pos = end
-        self._feed_length += arc.length()
-
-    def _include(self, p: Iterable[float]) -> None:
+    def _include(self, p: Sequence[float]) -> None:
         low, high = self._low, self._high
-        for i, v in enumerate(p):
-            if v < low[i]:
-                low[i] = v
-            if v > high[i]:
-                high[i] = v
-
-
-def _scaled(p: Point, ratio: float) -> Point:
-    return (p[0] * ratio, p[1] * ratio, p[2] * ratio)
+        x, y, z = p[0], p[1], p[2]
+        if x < low[0]:
+            low[0] = x
+        if x > high[0]:
+            high[0] = x
+        if y < low[1]:
+            low[1] = y
+        if y > high[1]:
+            high[1] = y
+        if z < low[2]:
+            low[2] = z
+        if z > high[2]:
+            high[2] = z
 
 
 @dataclass(frozen=True)

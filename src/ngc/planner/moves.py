@@ -15,11 +15,13 @@ What it models of LinuxCNC's task and canon layers (``docs/time.md``):
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
-from typing import Any
+from collections.abc import Callable
 
 from ..canon import ops
 from ..errors import NgcError
+from ..toolpath.tracker import PROBE as PROBE_MOVE
+from ..toolpath.tracker import RAPID as RAPID_MOVE
+from ..toolpath.tracker import ArcMove, Toolpath
 from .geometry import Line, Pos, Vec, arc_from_canon, cubic_biarcs, nurbs_polyline
 from .lookahead import ARC, EXACT, FEED, PARABOLIC, RAPID, SQRT3_2, STOP, Planner, Segment
 from .machine import MAX_COORDINATE, Machine
@@ -33,9 +35,6 @@ G5_PIECES = 16
 _new = tuple.__new__  # a NamedTuple made without its Python __new__
 AXES6 = "XYZABC"
 
-# Each plane's (first axis, second axis, normal axis) index, as ARC_FEED gives them.
-PLANES = {"CANON_PLANE_XY": (0, 1, 2), "CANON_PLANE_YZ": (1, 2, 0),
-          "CANON_PLANE_XZ": (2, 0, 1)}
 
 # Operations that make task wait for motion to stop, by kind of wait.
 SPINDLE_START = (ops.StartSpindleClockwise, ops.StartSpindleCounterclockwise)
@@ -47,25 +46,24 @@ Wait = Callable[[str, float, int], None]
 
 
 class PathSink:
-    """A canon sink that feeds a :class:`Planner`.  ``on_wait(kind, seconds, line)`` hears of
-    every standstill (a dwell, a tool change, a spindle start or stop)."""
+    """A reader of the toolpath (:class:`~ngc.toolpath.tracker.Toolpath`) that feeds a
+    :class:`Planner`.  ``on_wait(kind, seconds, line)`` hears of every standstill (a dwell, a
+    tool change, a spindle start or stop).  ``toolpath`` is the toolpath it reads (None: one of
+    its own, for the machine's units and start position, at ``self.toolpath``): positions come
+    from it in machine coordinates, and the units, offsets, tool and plane are its."""
 
-    def __init__(self, machine: Machine, planner: Planner, on_wait: Wait) -> None:
+    def __init__(self, machine: Machine, planner: Planner, on_wait: Wait,
+                 toolpath: Toolpath | None = None) -> None:
         self.machine = machine
         self.planner = planner
         self.on_wait = on_wait
         self.inch_machine = machine.linear_units == "inch"
-        self.scale = 1.0  # program units to machine units
         start = machine.start_position
         self.pos: Pos = tuple(float(start.get(a, 0.0)) for a in AXES6)  # type: ignore[assignment]
-        self.g5x = [0.0] * 6
-        self.g92 = [0.0] * 6
-        self.tlo = [0.0] * 6
-        self.rot = 0.0
-        self.cos_r, self.sin_r = 1.0, 0.0
-        self.shift = [0.0] * 6  # g5x + g92 + tool length offset, when there is no rotation
-        self.identity = True  # program coordinates are machine coordinates
-        self.plane = PLANES["CANON_PLANE_XY"]
+        if toolpath is None:
+            toolpath = Toolpath(self, inch_machine=self.inch_machine, start=self.pos)
+        self.toolpath = toolpath
+        self.frame = toolpath.frame
         self.feed = 0.0  # units per minute (or per revolution) of the program when it was set
         self.feed_scale = 1.0  # those units to machine units: a feed keeps the units it was set
         # in (F runs before G20/G21 in the order of execution, and canon converts it when set)
@@ -74,7 +72,6 @@ class PathSink:
         self.fspeed = 0.0  # the programmed feed in machine units per second
         self.css_max = 0.0  # G96: the spindle's greatest speed (rpm); 0: G97, S in rpm
         self.sync = 0.0  # G33, G33.1, G76: machine units per revolution; 0: not synchronised
-        self.inch_program = self.inch_machine  # the program's units are inches
         # blend mode without a tolerance until the program says otherwise, as the interpreter
         # starts (G64 without P) and as LinuxCNC runs it (measured: a square with no G61/G64
         # takes G64's time to the servo cycle)
@@ -91,8 +88,7 @@ class PathSink:
         self.naive_tol2 = 0.0  # its square
         self.merging = False  # G64 P… Q…: straight feeds go through the naive-CAM chain
         self.per_move = False  # the feed is worked out for each move (feed_at)
-        self.tool = 0
-        self.selected = 0
+        self.tool = 0  # the tool of the moves made now (a chain keeps the one it began with)
         self.spindle_on = False
         # naive-CAM: the points after chain_start (relative to it), the lines and lengths of the
         # moves to them, and the sum of those lengths
@@ -113,20 +109,31 @@ class PathSink:
         self.missing = tuple(i for i, lim in enumerate(limits) if lim is None)
         self.vcap = machine.max_linear_velocity
 
-    # -- the sink protocol --------------------------------------------------------------------
-    def emit(self, op: ops.Op, label: str, line: int) -> None:
+    # -- the toolpath's consumer protocol ------------------------------------------------------
+    def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
+        if kind is RAPID_MOVE:
+            self.flush_chain()
+            self.line_to(self.pos, end, line, False)
+        elif kind is PROBE_MOVE:
+            self.wait("wait", 0.0, line)
+        elif self.merging:
+            self.see_point(end, line)  # the hot path of CAM surfaces
+        else:
+            self.flush_chain()
+            self.line_to(self.pos, end, line, True)
+
+    def arc(self, arc: ArcMove, line: int) -> None:
+        self.arc_to(arc.end, arc.centre + arc.end[3:], arc.normal,
+                    arc.turns, line)
+
+    def tap(self, start: Pos, bottom: Pos, line: int) -> None:
+        self.rigid_tap(bottom, line)
+
+    def other(self, op: ops.Op, line: int) -> None:
         kind = type(op)
-        if kind is ops.StraightFeed:
-            self.straight(self.to_machine(op), line, feed=True)  # type: ignore[arg-type]
-        elif kind is ops.StraightTraverse:
-            self.straight(self.to_machine(op), line, feed=False)  # type: ignore[arg-type]
-        elif kind is ops.ArcFeed:
-            self.arc(op, line)  # type: ignore[arg-type]
-        elif kind is ops.NurbsFeed:
-            self.nurbs(op, line)  # type: ignore[arg-type]
-        elif kind is ops.SetFeedRate:
+        if kind is ops.SetFeedRate:
             self.feed = op.rate  # type: ignore[attr-defined]
-            self.feed_scale = self.scale
+            self.feed_scale = self.frame.scale
             self._feed_changed()
         elif kind is ops.SetFeedMode:
             self.per_rev = op.mode == 1  # type: ignore[attr-defined]
@@ -141,14 +148,12 @@ class PathSink:
             self._feed_changed()
         elif kind is ops.StartSpeedFeedSync:
             self.flush_chain()
-            self.sync = op.per_rev * self.scale  # type: ignore[attr-defined]
+            self.sync = op.per_rev * self.frame.scale  # type: ignore[attr-defined]
             self._feed_changed()
         elif kind is ops.StopSpeedFeedSynch:
             self.flush_chain()
             self.sync = 0.0
             self._feed_changed()
-        elif kind is ops.RigidTap:
-            self.rigid_tap(op, line)  # type: ignore[arg-type]
         elif kind is ops.SetMotionControlMode:
             self.flush_chain()
             self.mode = STOP if op.mode == "CANON_EXACT_STOP" else EXACT  # type: ignore[attr-defined]
@@ -163,45 +168,21 @@ class PathSink:
                 # reference machine, in every program measured): they stop here
                 self.planner.rapid_corners_stop = True
             self.mode = PARABOLIC
-            self.tolerance = op.tolerance * self.scale  # type: ignore[attr-defined]
+            self.tolerance = op.tolerance * self.frame.scale  # type: ignore[attr-defined]
             self._feed_changed()
         elif kind is ops.SetNaivecamTolerance:
             self.flush_chain()
-            self.naive_tol = op.tolerance * self.scale  # type: ignore[attr-defined]
+            self.naive_tol = op.tolerance * self.frame.scale  # type: ignore[attr-defined]
             self.naive_tol2 = self.naive_tol * self.naive_tol
             self._feed_changed()
         elif kind is ops.UseLengthUnits:
-            inch = op.units == "CANON_UNITS_INCHES"  # type: ignore[attr-defined]
-            self.inch_program = inch
-            if inch == self.inch_machine:
-                self.scale = 1.0
-            else:
-                self.scale = MM_PER_INCH if inch else 1.0 / MM_PER_INCH
             self._feed_changed()
-            self._offsets_changed()
-        elif kind is ops.SelectPlane:
-            self.plane = PLANES.get(op.plane, self.plane)  # type: ignore[attr-defined]
-        elif kind is ops.SetG5xOffset:
-            self.g5x = self._offset(list(op)[1:])
-            self._offsets_changed()
-        elif kind is ops.SetG92Offset:
-            self.g92 = self._offset(list(op))
-            self._offsets_changed()
-        elif kind is ops.SetXYRotation:
-            self.rot = math.radians(op.degrees)  # type: ignore[attr-defined]
-            self.cos_r, self.sin_r = math.cos(self.rot), math.sin(self.rot)
-            self._offsets_changed()
-        elif kind is ops.UseToolLengthOffset:
-            self.tlo = self._offset(list(op)[:6])
-            self._offsets_changed()
-        elif kind is ops.SelectTool:
-            self.selected = op[0]  # type: ignore[index]
         elif kind is ops.ChangeTool:
             self.flush_chain()  # the moves before the change keep the tool they were made with
-            self.tool = self.selected  # the change counts for the tool it puts in
+            self.tool = self.toolpath.tool  # the change counts for the tool it puts in
             self.wait("tool change", self.machine.tool_change_time, line)
         elif kind is ops.ChangeToolNumber:
-            self.tool = self.selected
+            self.tool = self.toolpath.tool
         elif kind is ops.Dwell:
             self.wait("dwell", op.seconds, line)  # type: ignore[attr-defined]
         elif kind in SPINDLE_START:
@@ -211,44 +192,20 @@ class PathSink:
             was = self.spindle_on
             self.spindle_on = False
             self.wait("spindle", self.machine.spindle_stop_time if was else 0.0, line)
-        elif kind in WAITS or kind is ops.StraightProbe:
+        elif kind in WAITS:
             self.wait("wait", 0.0, line)
         elif kind is ops.ProgramEnd:
             self.flush_chain()
             self.planner.stop()
 
-    def emit_move(self, kind: type, fields: Sequence[Any], label: str, line: int) -> None:
-        if kind is ops.StraightFeed:
-            if self.merging:
-                # the hot path of CAM surfaces
-                self.see_point(tuple(fields) if self.identity else self.to_machine(fields),
-                               line)
-            else:
-                self.straight(self.to_machine(fields), line, True)
-        elif kind is ops.StraightTraverse:
-            self.straight(self.to_machine(fields), line, False)
-        else:
-            self.emit(kind(*fields), label, line)
+    def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
+        self.nurbs_curve(curve, line)
 
-    def print_text(self, text: str) -> None:
-        pass
-
-    def flush(self) -> None:
+    def finish(self) -> None:
         self.flush_chain()
         self.planner.stop()
 
     # -- positions ----------------------------------------------------------------------------
-    def _offset(self, values: list[float]) -> list[float]:
-        """An offset given in program units, in machine units: X Y Z scaled, A B C (degrees in
-        every unit system) as they are."""
-        s = self.scale
-        return [values[0] * s, values[1] * s, values[2] * s, values[3], values[4], values[5]]
-
-    def _offsets_changed(self) -> None:
-        g5, g9, t = self.g5x, self.g92, self.tlo
-        self.shift = [g5[i] + g9[i] + t[i] for i in range(6)]
-        self.identity = self.scale == 1.0 and not self.rot and not any(self.shift)
-
     def _feed_changed(self) -> None:
         """The feed in machine units per second, where it is the same for every move; else
         (G96 with a feed per revolution, or a spindle-synchronised move) it is worked out for
@@ -267,26 +224,13 @@ class PathSink:
         program's coordinates in the middle of the move, up to G96's D."""
         rpm = self.rpm
         if self.css_max > 0.0:
-            radius = abs(0.5 * (start[0] + end[0]) - self.shift[0]) / self.scale
-            surface = rpm * (12.0 if self.inch_program else 1000.0)  # per minute, program units
+            frame = self.frame
+            radius = abs(0.5 * (start[0] + end[0]) - frame.shift[0]) / frame.scale
+            surface = rpm * (12.0 if frame.inch_program else 1000.0)  # per minute, program units
             circle = 2.0 * math.pi * radius
             rpm = self.css_max if circle * self.css_max <= surface else surface / circle
         per_rev = self.sync if self.sync > 0.0 else self.feed * self.feed_scale
         return per_rev * rpm / 60.0
-
-    def to_machine(self, op: Sequence[float]) -> Pos:
-        s = self.scale
-        if not self.rot:
-            o = self.shift
-            return (op[0] * s + o[0], op[1] * s + o[1], op[2] * s + o[2], op[3] + o[3],
-                    op[4] + o[4], op[5] + o[5])
-        g5, g9, t = self.g5x, self.g92, self.tlo
-        x = op[0] * s + g9[0]
-        y = op[1] * s + g9[1]
-        x, y = x * self.cos_r - y * self.sin_r, x * self.sin_r + y * self.cos_r
-        return (x + g5[0] + t[0], y + g5[1] + t[1], op[2] * s + g9[2] + g5[2] + t[2],
-                op[3] + g9[3] + g5[3] + t[3], op[4] + g9[4] + g5[4] + t[4],
-                op[5] + g9[5] + g5[5] + t[5])
 
     def check(self, end: Pos, line: int, start: Pos | None = None) -> None:
         """A move from ``start`` (the current position) to ``end`` that the machine can make:
@@ -299,7 +243,7 @@ class PathSink:
                 raise MissingAxis(AXES6[i], tuple(self.machine.axes), line)
 
     # -- moves --------------------------------------------------------------------------------
-    def straight(self, end: Pos, line: int, feed: bool) -> None:
+    def straight_to(self, end: Pos, line: int, feed: bool) -> None:
         if feed and self.merging:
             self.see_point(end, line)
             return
@@ -406,27 +350,10 @@ class PathSink:
         seg.parts_length = parts_length
         self.planner.add(seg)
 
-    def arc(self, op: ops.ArcFeed, line: int) -> None:
-        p1, p2, pn = self.plane
-        # the end and the centre in program coordinates, then in machine coordinates
-        prog = [0.0] * 6
-        prog[p1], prog[p2], prog[pn] = op.first_end, op.second_end, op.axis_end_point
-        prog[3], prog[4], prog[5] = op.a, op.b, op.c
-        centre = [0.0] * 6
-        centre[p1], centre[p2], centre[pn] = op.first_axis, op.second_axis, op.axis_end_point
-        end = self.to_machine(prog)
-        c = self.to_machine(centre)
-        normal = [0.0, 0.0, 0.0]
-        normal[pn] = 1.0
-        if self.rot:  # the XY rotation turns the normal of an XZ or YZ arc with the plane
-            normal[0], normal[1] = (normal[0] * self.cos_r - normal[1] * self.sin_r,
-                                    normal[0] * self.sin_r + normal[1] * self.cos_r)
-        self.arc_to(end, c, (normal[0], normal[1], normal[2]), op.rotation, line)
-
     def arc_to(self, end: Pos, c: Pos, normal: Vec, turns: int, line: int) -> None:
         """An arc from the current position to ``end`` about ``c`` (machine coordinates) in the
         plane of ``normal``, ``turns`` as ARC_FEED's rotation."""
-        p1, p2, pn = self.plane
+        p1, p2, pn = self.toolpath.plane
         start = self.pos
         self.check(end, line)
         within(c, line)
@@ -434,7 +361,7 @@ class PathSink:
             if i in self.missing and (c[p1], c[p2]) != (start[p1], start[p2]):
                 raise MissingAxis(AXES6[i], tuple(self.machine.axes), line)
         shape = arc_from_canon(start, end, (c[0], c[1], c[2]), normal, turns)
-        if (self.mode == PARABOLIC and self.naive_tol > 0.0 and self.plane == (0, 1, 2)
+        if (self.mode == PARABOLIC and self.naive_tol > 0.0 and (p1, p2) == (0, 1)
                 and abs(shape.rise) < 1e-12 and shape.sweep < math.pi
                 and shape.radius * (1.0 - math.cos(0.5 * shape.sweep)) < self.naive_tol):
             mid = shape.point(0.5 * shape.length)
@@ -507,34 +434,34 @@ class PathSink:
         seg.vsoft = vsoft
         self.planner.add(seg)
 
-    def nurbs(self, op: ops.NurbsFeed, line: int) -> None:
+    def nurbs_curve(self, op: ops.NurbsFeed, line: int) -> None:
         """G5: the cubic curve run as LinuxCNC runs it, as G5_PIECES biarcs (see
         :func:`~ngc.planner.geometry.cubic_biarcs`), each arc as an ARC_FEED of its own (naive CAM
         included); G5.1 and G5.2: the curve in the XY plane run as straight feeds within
         NURBS_TOLERANCE of it (a chain of short lines, joined as any other)."""
         z, abc = self.pos[2], self.pos[3:]
+        to_machine = self.frame.to_machine
         if op.order == 4 and op.size == 4 and all(w == 1.0 for w in op.weights):
             for end, centre, turns in cubic_biarcs(op.points, G5_PIECES):
-                e = self.to_machine((end[0], end[1], 0.0, 0.0, 0.0, 0.0))
+                e = to_machine((end[0], end[1], 0.0, 0.0, 0.0, 0.0))
                 e = (e[0], e[1], z, abc[0], abc[1], abc[2])
                 if centre is None:
-                    self.straight(e, line, True)
+                    self.straight_to(e, line, True)
                     continue
-                c = self.to_machine((centre[0], centre[1], 0.0, 0.0, 0.0, 0.0))
+                c = to_machine((centre[0], centre[1], 0.0, 0.0, 0.0, 0.0))
                 self.arc_to(e, (c[0], c[1], z, abc[0], abc[1], abc[2]), (0.0, 0.0, 1.0), turns,
                             line)
             return
         for x, y in nurbs_polyline(op.points, op.weights, op.knots, op.order, NURBS_TOLERANCE):
-            p = self.to_machine((x, y, 0.0, 0.0, 0.0, 0.0))
-            self.straight((p[0], p[1], z, abc[0], abc[1], abc[2]), line, True)
+            p = to_machine((x, y, 0.0, 0.0, 0.0, 0.0))
+            self.straight_to((p[0], p[1], z, abc[0], abc[1], abc[2]), line, True)
 
-    def rigid_tap(self, op: ops.RigidTap, line: int) -> None:
+    def rigid_tap(self, bottom: Pos, line: int) -> None:
         """G33.1: synchronised to the point and back, stopping at the bottom (the spindle's
         reversal itself takes no time here)."""
         self.flush_chain()
         self.planner.stop()
         start = self.pos
-        bottom = self.to_machine((op.x, op.y, op.z, 0.0, 0.0, 0.0))
         bottom = (bottom[0], bottom[1], bottom[2], start[3], start[4], start[5])
         mode = self.mode
         self.mode = STOP

@@ -135,7 +135,8 @@ class Timer:
         self.on_wait = on_wait
         self.result = TimeResult()
         self.planner = Planner(machine, self.segment)
-        self.sink = PathSink(machine, self.planner, self.wait)
+        self.path = PathSink(machine, self.planner, self.wait)
+        self.sink = self.path.toolpath
         self.last_kind = "feed"
         # time of the run of segments of one kind and one tool, not yet in by_kind and by_tool
         self.run_kind: str | None = None
@@ -186,7 +187,7 @@ class Timer:
         r = self.result
         r.by_kind[kind] += t
         r.by_line.add(line, t)
-        r.by_tool[self.sink.tool] += t
+        r.by_tool[self.path.tool] += t
         r.naive_s += seconds
         if self.on_wait is not None:
             self.on_wait(kind, start, t, line)

@@ -1,0 +1,1 @@
+"""The toolpath layer: canon in, moves in machine coordinates out (see :mod:`.tracker`)."""
