@@ -168,7 +168,57 @@ def build_parser() -> argparse.ArgumentParser:
     )
     check.set_defaults(run=run_check)
     _add_time(sub, [_machine_options()])
+    _add_plot(sub, [_machine_options()])
     return parser
+
+
+def _add_plot(sub: argparse._SubParsersAction[argparse.ArgumentParser],
+              parents: list[argparse.ArgumentParser]) -> None:
+    plot = sub.add_parser(
+        "plot", parents=parents, help="draw a program's toolpath as SVG or PNG",
+        description="Run a LinuxCNC program and draw its toolpath in machine coordinates: "
+        "rapids dashed, feeds solid, arcs exact, drill points and tool changes marked, the "
+        "extents as dimension lines in the program's units. A program that stops on an error "
+        "is drawn up to the error, the point marked and the message on the drawing (exit 1).",
+        epilog=PROGRAM_HELP,
+    )
+    plot.add_argument("file", metavar="FILE", help="the program (- for standard input)")
+    plot.add_argument("-o", "--output", metavar="OUT", required=True,
+                      help="the picture: OUT.svg, or OUT.png (needs: pip install 'ngc[png]')")
+    plot.add_argument("--view", choices=tuple(VIEW_NAMES), default="top",
+                      help="top (XY), front (XZ), side (YZ), iso (isometric) or lathe (Z right, "
+                      "X up); default top")
+    plot.add_argument("--color", choices=("kind", "tool", "feed", "line"), default="kind",
+                      help="what the colours show: the kind of move (default), the tool, the "
+                      "feed or the line number")
+    plot.add_argument("--size", metavar="WxH", type=_size, default=(1200, 900),
+                      help="the picture's size in pixels (default 1200x900)")
+    plot.add_argument("--dpi", type=float, default=0.0,
+                      help="PNG only: render at this many dots per inch (96: the SVG's size)")
+    plot.add_argument("--approach", action="store_true",
+                      help="draw the rapids before the first cut too (left out by default)")
+    plot.add_argument("--time", action="store_true",
+                      help="time the program on the machine (as ngc time) and print the cycle "
+                      "time on the drawing")
+    plot.add_argument("--machine", metavar="TOML", dest="machine_file",
+                      help="with --time: ngc's TOML machine file, over the default machine")
+    plot.add_argument("--dialect", choices=dialects.DIALECTS, default=None,
+                      help="the program's dialect; ngc plot draws LinuxCNC programs")
+    plot.set_defaults(run=run_plot)
+
+
+VIEW_NAMES = ("top", "front", "side", "iso", "lathe")
+
+
+def _size(text: str) -> tuple[int, int]:
+    parts = text.lower().split("x")
+    try:
+        w, h = int(parts[0]), int(parts[1])
+    except (IndexError, ValueError):
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT in pixels, got {text!r}") from None
+    if len(parts) != 2 or not (16 <= w <= 20000 and 16 <= h <= 20000):
+        raise argparse.ArgumentTypeError(f"a size from 16x16 to 20000x20000 pixels, not {text!r}")
+    return w, h
 
 
 def _add_time(sub: argparse._SubParsersAction[argparse.ArgumentParser],
@@ -513,6 +563,61 @@ def _unreadable(name: str, exc: OSError) -> dict[str, object]:
 
 
 NOT_LINUXCNC = "ngc time runs LinuxCNC programs; {name} is in the engine dialect"
+
+
+def run_plot(options: argparse.Namespace) -> int:
+    """``ngc plot FILE -o OUT``: the toolpath drawn to OUT (.svg or .png).  Exit 2 for a bad
+    command line or machine input, a file that cannot be read or written, an engine-dialect
+    program or a missing PNG renderer; 1 when the program stopped on an error (the picture is
+    written all the same, the error also on stderr)."""
+    from .commands import plot
+
+    try:
+        plot.output_format(options.output)
+    except ValueError as exc:
+        sys.stderr.write(f"ngc plot: {exc}\n")
+        return EXIT_USAGE
+    program = _open_marked(options.file, options.dialect)
+    try:
+        if program.dialect == ENGINE:
+            sys.stderr.write(f"ngc plot: draws LinuxCNC programs; {program.name} is in the "
+                             "engine dialect (python -m ngc.engine.svg draws those)\n")
+            return EXIT_USAGE
+        try:
+            inputs, setup = _setup("plot", options)
+            machine = None
+            if options.time:
+                from .planner.config import load_machine
+
+                machine = load_machine(setup.ini, options.machine_file)
+        except NgcConfigError as exc:
+            sys.stderr.write(f"ngc plot: {exc.message}\n")
+            return EXIT_USAGE
+        if program.handle is None:
+            return _cannot_open("plot", program)
+        how = plot.PlotOptions(view=options.view, color=options.color, width=options.size[0],
+                               height=options.size[1], dpi=options.dpi,
+                               approach=options.approach)
+        handle = text_reader(program.handle)
+        try:
+            with handle, _progress(program.name, handle, output_to_terminal=False) as progress:
+                result = plot.draw(progress.lines(handle), program.name, options.output,
+                                   lambda sink: new_interpreter(sink, inputs, setup,
+                                                                write_files=False),
+                                   how, reader=handle, machine=machine)
+        except NgcConfigError as exc:
+            sys.stderr.write(f"ngc plot: {exc.message}\n")
+            return EXIT_USAGE
+        except OSError as exc:
+            sys.stderr.write(f"ngc plot: cannot write {_name(options.output)}: "
+                             f"{exc.strerror}\n")
+            return EXIT_USAGE
+    finally:
+        program.close()
+    if result.error is not None:
+        sys.stderr.write(result.error.render() + "\n")
+        return EXIT_PROGRAM_ERROR
+    return EXIT_OK
 
 
 def run_time(options: argparse.Namespace) -> int:

@@ -23,6 +23,7 @@ from ..canon.ops import Sink
 from ..interp.interpreter import Interpreter
 from ..interp.source import ProgramReader, text_reader
 from ..options import MachineOptions, load_setup, new_interpreter
+from ..toolpath.tracker import Toolpath
 from .lookahead import BLEND, MAX_SECONDS, Planner, Segment, TooLong
 from .machine import DEFAULT_MACHINE, Machine
 from .moves import PathSink
@@ -129,13 +130,13 @@ class Timer:
     ``on_segment`` and ``on_wait`` (if given) once it is counted."""
 
     def __init__(self, machine: Machine, on_segment: SegmentListener | None = None,
-                 on_wait: WaitListener | None = None) -> None:
+                 on_wait: WaitListener | None = None, toolpath: Toolpath | None = None) -> None:
         self.machine = machine
         self.on_segment = on_segment
         self.on_wait = on_wait
         self.result = TimeResult()
         self.planner = Planner(machine, self.segment)
-        self.path = PathSink(machine, self.planner, self.wait)
+        self.path = PathSink(machine, self.planner, self.wait, toolpath)
         self.sink = self.path.toolpath
         self.last_kind = "feed"
         # time of the run of segments of one kind and one tool, not yet in by_kind and by_tool

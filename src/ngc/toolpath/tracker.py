@@ -252,3 +252,36 @@ class Toolpath:
     def _sync_off(self, op: ops.Op, line: int) -> None:
         self._consumer.other(op, line)
         self.synced = False
+
+
+class Tee:
+    """A consumer that hands everything to several readers in turn (``ngc plot --time`` draws
+    and times one run): ``Toolpath(Tee())``, then each reader made with that toolpath and
+    added to ``readers``."""
+
+    def __init__(self, *readers: Consumer) -> None:
+        self.readers = list(readers)
+
+    def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
+        for r in self.readers:
+            r.straight(kind, start, end, line)
+
+    def arc(self, arc: ArcMove, line: int) -> None:
+        for r in self.readers:
+            r.arc(arc, line)
+
+    def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
+        for r in self.readers:
+            r.nurbs(curve, start, line)
+
+    def tap(self, start: Pos, bottom: Pos, line: int) -> None:
+        for r in self.readers:
+            r.tap(start, bottom, line)
+
+    def other(self, op: ops.Op, line: int) -> None:
+        for r in self.readers:
+            r.other(op, line)
+
+    def finish(self) -> None:
+        for r in self.readers:
+            r.finish()

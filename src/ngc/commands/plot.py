@@ -1,0 +1,130 @@
+"""``ngc plot``: a picture of a program's toolpath, as SVG or PNG.
+
+The program runs through the interpreter with the machine inputs of every command; its
+toolpath (:mod:`ngc.toolpath`) becomes a scene in one view (:mod:`ngc.render.scene`), written as
+SVG (:mod:`ngc.render.svg`) and, for a ``.png`` output, rendered by resvg
+(:mod:`ngc.render.png`).  A program that stops on an error is drawn up to the error, the point
+marked and the message written on the drawing.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from collections.abc import Callable, Iterable
+from typing import NamedTuple
+
+from ..canon.ops import Sink
+from ..errors import NgcError
+from ..interp.interpreter import Interpreter
+from ..interp.source import ProgramReader
+from ..planner.machine import Machine as PlannerMachine
+from ..planner.timing import Timer
+from ..render import svg
+from ..render.png import svg_to_png
+from ..render.scene import VIEWS, Scene
+from ..toolpath.tracker import Tee, Toolpath
+
+FORMATS = ("svg", "png")
+
+
+class PlotResult(NamedTuple):
+    """What was drawn: the output file, the moves' length (machine units) and the error the
+    program stopped with, if any."""
+
+    output: str
+    length: float
+    error: NgcError | None
+    time_s: float | None = None
+
+
+class PlotOptions(NamedTuple):
+    """How to draw: the view (a name of :data:`~ngc.render.scene.VIEWS`), what colours key
+    (``kind``, ``tool``, ``feed``, ``line``), the picture's size in pixels, the PNG's dpi (0:
+    96), whether the approach before the first cut is drawn."""
+
+    view: str = "top"
+    color: str = "kind"
+    width: int = 1200
+    height: int = 900
+    dpi: float = 0.0
+    approach: bool = False
+
+
+def output_format(path: str) -> str:
+    """``svg`` or ``png``, from the output's extension; ValueError for anything else."""
+    ext = os.path.splitext(path)[1].lower().lstrip(".")
+    if ext not in FORMATS:
+        raise ValueError(f"the output must end in .svg or .png, not {path!r}")
+    return ext
+
+
+def draw(lines: Iterable[str], name: str, output: str,
+         new_interpreter: Callable[[Sink], Interpreter], options: PlotOptions | None = None, *,
+         reader: ProgramReader | None = None, machine: PlannerMachine | None = None
+         ) -> PlotResult:
+    """Run the program ``lines`` (named ``name`` in errors and on the drawing) through
+    ``new_interpreter(sink)`` and draw it to ``output`` (``.svg`` or ``.png``); with a
+    ``machine``, time it on that machine in the same run and print the cycle time on it."""
+    fmt = output_format(output)
+    options = PlotOptions() if options is None else options
+    if options.view not in VIEWS:
+        raise ValueError(f"the view must be one of {', '.join(VIEWS)}, not {options.view!r}")
+    view = VIEWS[options.view]
+    timer: Timer | None = None
+    if machine is None:
+        scene = Scene(view, color=options.color, approach=options.approach)
+    else:
+        tee = Tee()
+        toolpath = Toolpath(tee, inch_machine=machine.linear_units == "inch")
+        scene = Scene(view, color=options.color, approach=options.approach, toolpath=toolpath)
+        timer = Timer(machine, toolpath=toolpath)
+        tee.readers.extend((scene, timer.path))
+    interp = new_interpreter(scene.toolpath)
+    error: NgcError | None = None
+    time_s: float | None = None
+    try:
+        interp.startup()
+        interp.run(lines, file=name, reader=reader)
+        if timer is not None:
+            time_s = timer.finish().total_s
+    except NgcError as exc:
+        error = exc
+        scene.stop_at()
+    frame = scene.toolpath.frame
+    labels = svg.Labels(
+        name=os.path.basename(name), units="inch" if frame.inch_program else "mm",
+        mm_per_unit=25.4 if frame.inch_program else 1.0, time_s=time_s,
+        error=None if error is None else _error_text(error))
+    try:
+        if fmt == "svg":
+            _write_svg(output, scene, labels, options)
+        else:
+            _write_png(output, scene, labels, options)
+    finally:
+        scene.spool.close()
+    return PlotResult(output, scene.length, error, time_s)
+
+
+def _error_text(error: NgcError) -> str:
+    where = f"line {error.line}: " if error.line else ""
+    return f"stopped at {where}{error.message}"
+
+
+def _write_svg(output: str, scene: Scene, labels: svg.Labels, options: PlotOptions) -> None:
+    with open(output, "w", encoding="utf-8") as out:
+        svg.write(out, scene, labels, options.width, options.height)
+
+
+def _write_png(output: str, scene: Scene, labels: svg.Labels, options: PlotOptions) -> None:
+    fd, tmp = tempfile.mkstemp(suffix=".svg")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as out:
+            svg.write(out, scene, labels, options.width, options.height)
+        scale = options.dpi / 96.0 if options.dpi > 0 else 1.0
+        data = svg_to_png(tmp, width=round(options.width * scale),
+                          height=round(options.height * scale))
+    finally:
+        os.unlink(tmp)
+    with open(output, "wb") as out:
+        out.write(data)

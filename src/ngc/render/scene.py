@@ -1,0 +1,339 @@
+"""What a picture of the toolpath shows, in one view: a reader of the toolpath that turns each
+move into styled two-dimensional primitives (lines, exact circular arcs, cubic Béziers) and
+marks (drill points, tool changes, the point where the program stopped), spooled so memory
+stays flat in the program's length; a writer (:mod:`ngc.render.svg`) reads them back.
+
+Coordinates are the view's (``right``, ``up``) in machine units; the view looks along
+``-toward``.  An arc whose plane faces the view is an exact arc; any other arc or helix is
+drawn as cubic Béziers within :data:`~ngc.render.curves.BEZIER_TOLERANCE` of it; a G5 curve is
+its own cubic, a G5.1 its own quadratic; a NURBS curve is drawn as lines within the tolerance.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import itertools
+import math
+import tempfile
+from array import array
+from collections.abc import Iterator, Sequence
+from typing import IO, NamedTuple
+
+from ..canon import ops
+from ..planner.geometry import nurbs_polyline
+from ..toolpath.frame import Pos
+from ..toolpath.tracker import ARC, FEED, NURBS, PROBE, RAPID, SYNC, TAP, ArcMove, Toolpath
+from . import curves
+
+Vec = tuple[float, float, float]
+
+SQ2, SQ3, SQ6 = math.sqrt(2.0), math.sqrt(3.0), math.sqrt(6.0)
+
+
+class View(NamedTuple):
+    """A parallel projection: screen right and up as unit vectors in machine coordinates, and
+    the direction toward the viewer (``right`` x ``up``); ``axes`` names the screen's axes
+    where they are machine axes."""
+
+    name: str
+    right: Vec
+    up: Vec
+    toward: Vec
+    axes: tuple[str, str] | None
+
+
+VIEWS = {
+    "top": View("top", (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0), ("X", "Y")),
+    "front": View("front", (1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.0, -1.0, 0.0), ("X", "Z")),
+    "side": View("side", (0.0, 1.0, 0.0), (0.0, 0.0, 1.0), (1.0, 0.0, 0.0), ("Y", "Z")),
+    "iso": View("iso", (1 / SQ2, 1 / SQ2, 0.0), (-1 / SQ6, 1 / SQ6, 2 / SQ6),
+                (1 / SQ3, -1 / SQ3, 1 / SQ3), None),
+    # a lathe's: Z to the right, X up (the XZ plane seen from -Y turned a quarter round)
+    "lathe": View("lathe", (0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), ("Z", "X")),
+}
+
+# primitive types
+LINE, ARC_2D, CUBIC, QUAD, MARK = 0.0, 1.0, 2.0, 3.0, 4.0
+# marks
+DRILL, TOOL_CHANGE, STOPPED = 0.0, 1.0, 2.0
+
+# what --color keys moves by
+COLOR_KEYS = ("kind", "tool", "feed", "line")
+KINDS = (RAPID, FEED, ARC, PROBE, SYNC, TAP, NURBS)
+KIND_INDEX = {k: float(i) for i, k in enumerate(KINDS)}
+
+RECORD = 11  # doubles a record holds: type, key, dashed, then up to eight coordinates
+
+
+class Spool:
+    """Records of :data:`RECORD` doubles, in memory up to ``limit`` of them, then in a
+    temporary file (removed when closed)."""
+
+    def __init__(self, limit: int = 1 << 16) -> None:
+        self.limit = limit
+        self.buf = array("d")
+        self.file: IO[bytes] | None = None
+        self.count = 0
+
+    def add(self, values: Sequence[float]) -> None:
+        buf = self.buf
+        buf.extend(values)
+        pad = RECORD - len(values)
+        if pad:
+            buf.extend((0.0,) * pad)
+        self.count += 1
+        if len(buf) >= self.limit * RECORD:
+            self._spill()
+
+    def _spill(self) -> None:
+        if self.file is None:
+            self.file = tempfile.TemporaryFile()  # noqa: SIM115 (closed by close())
+        self.buf.tofile(self.file)
+        self.buf = array("d")
+
+    def __iter__(self) -> Iterator[tuple[float, ...]]:
+        if self.file is not None:
+            self.file.flush()
+            self.file.seek(0)
+            size = self.limit * RECORD
+            while True:
+                chunk = array("d")
+                with contextlib.suppress(EOFError):  # (a last, shorter chunk is read all the same)
+                    chunk.fromfile(self.file, size)
+                if not chunk:
+                    break
+                yield from _records(chunk)
+                if len(chunk) < size:
+                    break
+        yield from _records(self.buf)
+
+    def close(self) -> None:
+        if self.file is not None:
+            self.file.close()
+            self.file = None
+
+
+def _records(chunk: array[float]) -> Iterator[tuple[float, ...]]:
+    for i in range(0, len(chunk), RECORD):
+        yield tuple(chunk[i:i + RECORD])
+
+
+class Box:
+    """The least and greatest of each coordinate seen."""
+
+    __slots__ = ("high", "low")
+
+    def __init__(self, dims: int) -> None:
+        self.low = [math.inf] * dims
+        self.high = [-math.inf] * dims
+
+    def add(self, i: int, lo: float, hi: float) -> None:
+        if lo < self.low[i]:
+            self.low[i] = lo
+        if hi > self.high[i]:
+            self.high[i] = hi
+
+    @property
+    def empty(self) -> bool:
+        return not self.low[0] <= self.high[0]
+
+
+class Scene:
+    """A reader of the toolpath that draws it in ``view``, keyed for colour by ``color`` (one
+    of :data:`COLOR_KEYS`).  Rapids before the first move that cuts are left out (as AXIS
+    draws), unless ``approach``.  ``scene.toolpath`` is the canon sink to give an interpreter
+    (``toolpath``: one made for several readers, see :class:`~ngc.toolpath.tracker.Tee`).
+
+    After the run: ``box`` (the drawing's extents in the view), ``extents`` (machine X Y Z),
+    ``length`` (machine units, rapids and feeds), ``keys`` (the colour keys used),
+    ``spool`` (the primitives), ``stopped`` (where the program stopped on an error)."""
+
+    def __init__(self, view: View, *, color: str = "kind", approach: bool = False,
+                 inch_machine: bool = False, toolpath: Toolpath | None = None) -> None:
+        if color not in COLOR_KEYS:
+            raise ValueError(f"color must be one of {', '.join(COLOR_KEYS)}, not {color!r}")
+        self.view = view
+        self.color = color
+        self.drawing = approach  # drawing rapids already
+        self.toolpath = Toolpath(self, inch_machine=inch_machine) if toolpath is None else toolpath
+        self.spool = Spool()
+        self.box = Box(2)
+        self.extents = Box(3)
+        self.length = 0.0
+        self.rapid_length = 0.0
+        self.keys: set[float] = set()
+        self.key_lo, self.key_hi = math.inf, -math.inf
+        self.marks = 0
+        self.feed = 0.0
+        self.plunge: tuple[Pos, int] | None = None  # a straight feed down Z, and its line
+        self.tools: list[int] = []
+
+    # -- helpers ------------------------------------------------------------------------------
+    def _uv(self, p: Sequence[float]) -> tuple[float, float]:
+        r, u = self.view.right, self.view.up
+        return (p[0] * r[0] + p[1] * r[1] + p[2] * r[2], p[0] * u[0] + p[1] * u[1] + p[2] * u[2])
+
+    def _key(self, kind: str, line: int) -> float:
+        c = self.color
+        if c == "kind":
+            key = KIND_INDEX[kind]
+        elif c == "tool":
+            key = float(self.toolpath.tool)
+        elif c == "feed":
+            key = -1.0 if kind == RAPID else self.feed
+        else:
+            key = float(line)
+        if c == "kind" or c == "tool":
+            self.keys.add(key)
+        elif key >= 0.0:
+            if key < self.key_lo:
+                self.key_lo = key
+            if key > self.key_hi:
+                self.key_hi = key
+        return key
+
+    @property
+    def key_range(self) -> tuple[float, float]:
+        """The least and greatest feed or line keyed (0, 0 if none)."""
+        return (self.key_lo, self.key_hi) if self.key_lo <= self.key_hi else (0.0, 0.0)
+
+    def _point(self, p: Sequence[float]) -> None:
+        u, v = self._uv(p)
+        self.box.add(0, u, u)
+        self.box.add(1, v, v)
+        self.extents.add(0, p[0], p[0])
+        self.extents.add(1, p[1], p[1])
+        self.extents.add(2, p[2], p[2])
+
+    def mark(self, kind: float, p: Sequence[float], value: float = 0.0) -> None:
+        u, v = self._uv(p)
+        self.spool.add((MARK, kind, 0.0, u, v, value))
+        self.marks += 1
+
+    # -- the toolpath's consumer protocol -----------------------------------------------------
+    def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
+        self._plunged(start, end, line)
+        if kind is RAPID and not self.drawing:
+            return
+        if kind is not RAPID:
+            self.drawing = True
+        self._line(kind, start, end, line)
+
+    def _line(self, kind: str, start: Sequence[float], end: Sequence[float], line: int) -> None:
+        d = math.dist(start[:3], end[:3])
+        self.length += d
+        if kind is RAPID:
+            self.rapid_length += d
+        self._point(start)
+        self._point(end)
+        u0, v0 = self._uv(start)
+        u1, v1 = self._uv(end)
+        if u0 != u1 or v0 != v1:
+            self.spool.add((LINE, self._key(kind, line), 1.0 if kind is RAPID else 0.0,
+                            u0, v0, u1, v1))
+
+    def _plunged(self, start: Pos, end: Pos, line: int) -> None:
+        """A cycle's hole: a feed down Z and back up on the same line."""
+        along = end[2] - start[2]
+        held, self.plunge = self.plunge, None
+        if abs(end[0] - start[0]) + abs(end[1] - start[1]) > 1e-9 or along == 0.0:
+            return
+        if along < 0.0:
+            self.plunge = (end, line)
+        elif held is not None and held[1] == line:
+            self.mark(DRILL, held[0])
+
+    def arc(self, arc: ArcMove, line: int) -> None:
+        self.drawing = True
+        self.plunge = None
+        f = curves.frame(arc.start, arc.end, arc.centre, arc.normal, arc.turns)
+        self.length += math.hypot(0.5 * (f.r0 + f.r1) * f.sweep, f.rise)
+        for i, axis in enumerate(((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))):
+            lo, hi = curves.extremes(f, axis)
+            self.extents.add(i, lo, hi)
+        view = self.view
+        for i, axis in enumerate((view.right, view.up)):
+            lo, hi = curves.extremes(f, axis)
+            self.box.add(i, lo, hi)
+        key = self._key(ARC, line)
+        facing = curves._dot(f.n, view.toward)
+        if abs(abs(facing) - 1.0) <= 1e-12 and abs(f.r1 - f.r0) <= 1e-12 * max(1.0, f.r0):
+            # (seen along its axis: a circle, a helix's rise unseen)
+            self._exact(f, key, (arc.turns > 0) == (facing > 0.0))
+            return
+        u, v = self._uv(f.point(0.0))
+        for q1, q2, p in curves.beziers(f):
+            a1, b1 = self._uv(q1)
+            a2, b2 = self._uv(q2)
+            a3, b3 = self._uv(p)
+            self.spool.add((CUBIC, key, 0.0, u, v, a1, b1, a2, b2, a3, b3))
+            u, v = a3, b3
+
+    def _exact(self, f: curves.Frame, key: float, ccw: bool) -> None:
+        """An arc in the plane of the drawing: SVG arcs (two halves for a whole circle)."""
+        r = f.r0
+        sweep = min(f.sweep, curves.TAU)
+        halves = 2 if sweep >= curves.TAU - 1e-9 else 1
+        t0 = 0.0
+        for i in range(1, halves + 1):
+            t1 = sweep * i / halves
+            u0, v0 = self._uv(f.point(t0))
+            u1, v1 = self._uv(f.point(t1))
+            large = 1.0 if (t1 - t0) > math.pi else 0.0
+            self.spool.add((ARC_2D, key, 0.0, u0, v0, u1, v1, r, large, 1.0 if ccw else 0.0))
+            t0 = t1
+
+    def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
+        self.drawing = True
+        self.plunge = None
+        to_machine = self.toolpath.frame.to_machine
+        prog = self.toolpath.prog
+        z, abc = prog[2], prog[3:]
+        key = self._key(NURBS, line)
+
+        def machine(x: float, y: float) -> Pos:
+            return to_machine((x, y, z, abc[0], abc[1], abc[2]))
+
+        pts = [machine(x, y) for x, y in curve.points]
+        for p in pts:
+            self._point(p)  # (a Bézier lies within its control points)
+        if curve.order in (3, 4) and curve.size == curve.order and all(
+                w == 1.0 for w in curve.weights):
+            uv = [c for p in pts for c in self._uv(p)]
+            self.spool.add((CUBIC if curve.order == 4 else QUAD, key, 0.0, *uv))
+            self.length += _polyline_length(pts)
+            return
+        prev = start
+        for x, y in nurbs_polyline(curve.points, curve.weights, curve.knots, curve.order,
+                                   curves.BEZIER_TOLERANCE):
+            p = machine(x, y)
+            self._line(NURBS, prev, p, line)
+            prev = p
+
+    def tap(self, start: Pos, bottom: Pos, line: int) -> None:
+        self.drawing = True
+        self._line(TAP, start, bottom, line)
+        self.mark(DRILL, bottom)
+
+    def other(self, op: ops.Op, line: int) -> None:
+        kind = type(op)
+        if kind is ops.SetFeedRate:
+            self.feed = op.rate * self.toolpath.frame.scale  # type: ignore[attr-defined]
+        elif kind is ops.ChangeTool:
+            tool = self.toolpath.tool
+            self.tools.append(tool)
+            if self.drawing:
+                self.mark(TOOL_CHANGE, self.toolpath.pos, float(tool))
+
+    def finish(self) -> None:
+        """Nothing is held back."""
+
+    def stop_at(self) -> Pos:
+        """Mark where the machine is: the program stopped there."""
+        self.mark(STOPPED, self.toolpath.pos)
+        self._point(self.toolpath.pos)
+        return self.toolpath.pos
+
+
+def _polyline_length(pts: Sequence[Pos]) -> float:
+    return sum(math.dist(a[:3], b[:3]) for a, b in itertools.pairwise(pts))

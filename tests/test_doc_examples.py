@@ -1,0 +1,61 @@
+"""Every ``ngc`` command line shown in the README and in ``docs/`` runs (exit 0), in a scratch
+directory holding a copy of ``examples/``; the pictures the README shows are what ``ngc plot``
+makes of them now."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))]
+BLOCK = re.compile(r"```(?:sh|bash)\n(.*?)```", re.S)
+
+
+def _commands() -> list[tuple[str, str]]:
+    found = []
+    for doc in DOCS:
+        for block in BLOCK.findall(doc.read_text()):
+            for line in block.splitlines():
+                command = line.split("  #", 1)[0].strip()
+                if re.search(r"(^|\| )ngc ", command):
+                    found.append((doc.relative_to(ROOT).as_posix(), command))
+    return found
+
+
+COMMANDS = _commands()
+
+
+def test_the_docs_show_commands() -> None:
+    assert len(COMMANDS) >= 10
+
+
+@pytest.mark.parametrize(("doc", "command"), COMMANDS, ids=[f"{d}: {c}" for d, c in COMMANDS])
+def test_command_runs(doc: str, command: str, tmp_path: Path) -> None:
+    shutil.copytree(ROOT / "examples", tmp_path / "examples")
+    script = f'ngc() {{ "{sys.executable}" -m ngc "$@"; }}\n{command}\n'
+    done = subprocess.run(["bash", "-c", script], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=300, env={"PATH": "/usr/bin:/bin", "PYTHONPATH": str(ROOT / "src"),
+                                            "HOME": str(tmp_path)})
+    assert done.returncode == 0, done.stderr
+
+
+PICTURES = re.compile(r"!\[[^\]]*\]\((docs/images/[^)]+\.svg)\)<!-- (ngc plot [^>]*) -->")
+
+
+def test_readme_pictures_are_current(tmp_path: Path) -> None:
+    """Each picture in the README is followed by the command that made it."""
+    shown = PICTURES.findall((ROOT / "README.md").read_text())
+    assert shown
+    for image, command in shown:
+        args = command.split()[2:]
+        out = tmp_path / Path(image).name
+        done = subprocess.run([sys.executable, "-m", "ngc", "plot", *args, "-o", str(out)],
+                              cwd=ROOT, capture_output=True, text=True, timeout=300)
+        assert done.returncode == 0, done.stderr
+        assert out.read_text() == (ROOT / image).read_text(), f"{image} is out of date: {command}"
