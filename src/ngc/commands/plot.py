@@ -12,18 +12,20 @@ from __future__ import annotations
 import os
 import tempfile
 from collections.abc import Callable, Iterable
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from ..canon.ops import Sink
 from ..errors import NgcError
 from ..interp.interpreter import Interpreter
 from ..interp.source import ProgramReader
-from ..planner.machine import Machine as PlannerMachine
-from ..planner.timing import Timer
 from ..render import svg
 from ..render.png import svg_to_png
 from ..render.scene import VIEWS, Scene
 from ..toolpath.tracker import Tee, Toolpath
+
+if TYPE_CHECKING:
+    from ..planner.machine import Machine as PlannerMachine
+    from ..planner.timing import Timer
 
 FORMATS = ("svg", "png")
 
@@ -75,6 +77,8 @@ def draw(lines: Iterable[str], name: str, output: str,
     if machine is None:
         scene = Scene(view, color=options.color, approach=options.approach)
     else:
+        from ..planner.timing import Timer  # (loaded for --time only)
+
         tee = Tee()
         toolpath = Toolpath(tee, inch_machine=machine.linear_units == "inch")
         scene = Scene(view, color=options.color, approach=options.approach, toolpath=toolpath)

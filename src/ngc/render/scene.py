@@ -61,6 +61,10 @@ DRILL, TOOL_CHANGE, STOPPED = 0.0, 1.0, 2.0
 COLOR_KEYS = ("kind", "tool", "feed", "line")
 KINDS = (RAPID, FEED, ARC, PROBE, SYNC, TAP, NURBS)
 KIND_INDEX = {k: float(i) for i, k in enumerate(KINDS)}
+KIND_INDEX[ARC] = KIND_INDEX[FEED]  # (an arc is a feed: one colour, one path for a contour)
+
+QUADRANTS = ((0.0, 1.0, 0.0), (0.5 * math.pi, 0.0, 1.0), (math.pi, -1.0, 0.0),
+             (1.5 * math.pi, 0.0, -1.0))  # (angle, cos, sin) where a circle is widest
 
 RECORD = 11  # doubles a record holds: type, key, dashed, then up to eight coordinates
 
@@ -78,11 +82,10 @@ class Spool:
     def add(self, values: Sequence[float]) -> None:
         buf = self.buf
         buf.extend(values)
-        pad = RECORD - len(values)
-        if pad:
-            buf.extend((0.0,) * pad)
+        if len(values) != RECORD:
+            buf.extend((0.0,) * (RECORD - len(values)))
         self.count += 1
-        if len(buf) >= self.limit * RECORD:
+        if self.count % self.limit == 0:
             self._spill()
 
     def _spill(self) -> None:
@@ -114,8 +117,7 @@ class Spool:
 
 
 def _records(chunk: array[float]) -> Iterator[tuple[float, ...]]:
-    for i in range(0, len(chunk), RECORD):
-        yield tuple(chunk[i:i + RECORD])
+    return zip(*[iter(chunk)] * RECORD, strict=True)
 
 
 class Box:
@@ -144,7 +146,8 @@ class Scene:
     draws), unless ``approach``.  ``scene.toolpath`` is the canon sink to give an interpreter
     (``toolpath``: one made for several readers, see :class:`~ngc.toolpath.tracker.Tee`).
 
-    After the run: ``box`` (the drawing's extents in the view), ``extents`` (machine X Y Z),
+    After the run: ``box`` (the drawing's extents in the view), ``extents`` (machine X Y Z; the
+    isometric view's dimensions: other views take arcs' extremes into ``box`` only),
     ``length`` (machine units, rapids and feeds), ``keys`` (the colour keys used),
     ``spool`` (the primitives), ``stopped`` (where the program stopped on an error)."""
 
@@ -167,6 +170,10 @@ class Scene:
         self.feed = 0.0
         self.plunge: tuple[Pos, int] | None = None  # a straight feed down Z, and its line
         self.tools: list[int] = []
+        self.last_end: Sequence[float] | None = None  # the end of the last move drawn
+        self.last_uv = (0.0, 0.0)  # its place in the view
+        self.kind_keys = KIND_INDEX if color == "kind" else None
+        self.top = view.right == (1.0, 0.0, 0.0) and view.up == (0.0, 1.0, 0.0)
 
     # -- helpers ------------------------------------------------------------------------------
     def _uv(self, p: Sequence[float]) -> tuple[float, float]:
@@ -197,13 +204,38 @@ class Scene:
         """The least and greatest feed or line keyed (0, 0 if none)."""
         return (self.key_lo, self.key_hi) if self.key_lo <= self.key_hi else (0.0, 0.0)
 
-    def _point(self, p: Sequence[float]) -> None:
-        u, v = self._uv(p)
-        self.box.add(0, u, u)
-        self.box.add(1, v, v)
-        self.extents.add(0, p[0], p[0])
-        self.extents.add(1, p[1], p[1])
-        self.extents.add(2, p[2], p[2])
+    def _point(self, p: Sequence[float]) -> tuple[float, float]:
+        """Take ``p`` into the extents; its place in the view."""
+        x, y, z = p[0], p[1], p[2]
+        if self.top:
+            u, v = x, y
+        else:
+            r, w = self.view.right, self.view.up
+            u = x * r[0] + y * r[1] + z * r[2]
+            v = x * w[0] + y * w[1] + z * w[2]
+        lo, hi = self.box.low, self.box.high
+        if u < lo[0]:
+            lo[0] = u
+        if u > hi[0]:
+            hi[0] = u
+        if v < lo[1]:
+            lo[1] = v
+        if v > hi[1]:
+            hi[1] = v
+        lo, hi = self.extents.low, self.extents.high
+        if x < lo[0]:
+            lo[0] = x
+        if x > hi[0]:
+            hi[0] = x
+        if y < lo[1]:
+            lo[1] = y
+        if y > hi[1]:
+            hi[1] = y
+        if z < lo[2]:
+            lo[2] = z
+        if z > hi[2]:
+            hi[2] = z
+        return u, v
 
     def mark(self, kind: float, p: Sequence[float], value: float = 0.0) -> None:
         u, v = self._uv(p)
@@ -212,25 +244,51 @@ class Scene:
 
     # -- the toolpath's consumer protocol -----------------------------------------------------
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
-        self._plunged(start, end, line)
-        if kind is RAPID and not self.drawing:
-            return
-        if kind is not RAPID:
+        if end[2] != start[2] or self.plunge is not None:
+            self._plunged(start, end, line)
+        if kind is RAPID:
+            if not self.drawing:
+                return
+        else:
             self.drawing = True
-        self._line(kind, start, end, line)
-
-    def _line(self, kind: str, start: Sequence[float], end: Sequence[float], line: int) -> None:
-        d = math.dist(start[:3], end[:3])
+        if start is not self.last_end or self.kind_keys is None:
+            self._line(kind, start, end, line)
+            return
+        # (``_line`` written out for a move from the last one's end: the hot path)
+        dx, dy, dz = end[0] - start[0], end[1] - start[1], end[2] - start[2]
+        d = math.sqrt(dx * dx + dy * dy + dz * dz)
         self.length += d
         if kind is RAPID:
             self.rapid_length += d
-        self._point(start)
-        self._point(end)
-        u0, v0 = self._uv(start)
-        u1, v1 = self._uv(end)
+        u0, v0 = self.last_uv
+        u1, v1 = self.last_uv = self._point(end)
+        self.last_end = end
         if u0 != u1 or v0 != v1:
-            self.spool.add((LINE, self._key(kind, line), 1.0 if kind is RAPID else 0.0,
-                            u0, v0, u1, v1))
+            key = self.kind_keys[kind]
+            self.keys.add(key)
+            self.spool.add((LINE, key, 1.0 if kind is RAPID else 0.0, u0, v0, u1, v1,
+                            0.0, 0.0, 0.0, 0.0))
+
+    def _line(self, kind: str, start: Sequence[float], end: Sequence[float], line: int) -> None:
+        # (the hot path of every drawing: written out)
+        dx, dy, dz = end[0] - start[0], end[1] - start[1], end[2] - start[2]
+        d = math.sqrt(dx * dx + dy * dy + dz * dz)
+        self.length += d
+        if kind is RAPID:
+            self.rapid_length += d
+        # (the start is the last move's end, already taken in, unless nothing was drawn since)
+        u0, v0 = self.last_uv if start is self.last_end else self._point(start)
+        u1, v1 = self.last_uv = self._point(end)
+        self.last_end = end
+        if u0 != u1 or v0 != v1:
+            fast = self.kind_keys
+            if fast is None:
+                key = self._key(kind, line)
+            else:
+                key = fast[kind]
+                self.keys.add(key)
+            self.spool.add((LINE, key, 1.0 if kind is RAPID else 0.0, u0, v0, u1, v1,
+                            0.0, 0.0, 0.0, 0.0))
 
     def _plunged(self, start: Pos, end: Pos, line: int) -> None:
         """A cycle's hole: a feed down Z and back up on the same line."""
@@ -246,19 +304,25 @@ class Scene:
     def arc(self, arc: ArcMove, line: int) -> None:
         self.drawing = True
         self.plunge = None
+        if self._facing(arc, line):
+            return
+        self.last_end = None
         f = curves.frame(arc.start, arc.end, arc.centre, arc.normal, arc.turns)
         self.length += math.hypot(0.5 * (f.r0 + f.r1) * f.sweep, f.rise)
-        for i, axis in enumerate(((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))):
-            lo, hi = curves.extremes(f, axis)
-            self.extents.add(i, lo, hi)
         view = self.view
         for i, axis in enumerate((view.right, view.up)):
             lo, hi = curves.extremes(f, axis)
             self.box.add(i, lo, hi)
+        if view.axes is None:  # (else the box holds the extents the drawing shows)
+            for i, axis in enumerate(((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))):
+                lo, hi = curves.extremes(f, axis)
+                self.extents.add(i, lo, hi)
+        self.last_end = None
         key = self._key(ARC, line)
         facing = curves._dot(f.n, view.toward)
-        if abs(abs(facing) - 1.0) <= 1e-12 and abs(f.r1 - f.r0) <= 1e-12 * max(1.0, f.r0):
-            # (seen along its axis: a circle, a helix's rise unseen)
+        if abs(abs(facing) - 1.0) <= 1e-12 and abs(f.r1 - f.r0) <= curves.BEZIER_TOLERANCE:
+            # (seen along its axis: a circle, a helix's rise unseen; an end a little off the
+            # start's circle, as rs274 allows, within the tolerance of one)
             self._exact(f, key, (arc.turns > 0) == (facing > 0.0))
             return
         u, v = self._uv(f.point(0.0))
@@ -269,9 +333,76 @@ class Scene:
             self.spool.add((CUBIC, key, 0.0, u, v, a1, b1, a2, b2, a3, b3))
             u, v = a3, b3
 
+    def _facing(self, arc: ArcMove, line: int) -> bool:
+        """An arc in a plane the view faces, drawn as SVG arcs straight from its ends and
+        centre (the common case, kept quick); False for any other arc."""
+        view = self.view
+        n, t = arc.normal, view.toward
+        facing = n[0] * t[0] + n[1] * t[1] + n[2] * t[2]
+        if abs(abs(facing) - 1.0) > 1e-12 or view.axes is None:
+            return False
+        s, e, c = arc.start, arc.end, arc.centre
+        if self.top:  # (u, v are x, y)
+            u0, v0 = s[0], s[1]
+            u1, v1, cu, cv = e[0], e[1], c[0], c[1]
+        else:
+            u0, v0 = self._uv(s)
+            u1, v1 = self._uv(e)
+            cu, cv = self._uv(c)
+        r0 = math.hypot(u0 - cu, v0 - cv)
+        r1 = math.hypot(u1 - cu, v1 - cv)
+        if abs(r1 - r0) > curves.BEZIER_TOLERANCE:
+            return False
+        ccw = (arc.turns > 0) == (facing > 0.0)
+        a0 = math.atan2(v0 - cv, u0 - cu)
+        ang = math.atan2(v1 - cv, u1 - cu) - a0
+        if not ccw:
+            ang = -ang
+        while ang <= 1e-12:
+            ang += curves.TAU
+        while ang > curves.TAU + 1e-12:
+            ang -= curves.TAU
+        turns = abs(arc.turns) - 1 if arc.turns else 0
+        rad = 0.5 * (r0 + r1)
+        rise = (e[0] - s[0]) * t[0] + (e[1] - s[1]) * t[1] + (e[2] - s[2]) * t[2]
+        self.length += math.hypot(rad * (ang + curves.TAU * turns), rise)
+        if s is not self.last_end:
+            self._point(s)
+        self.last_uv = self._point(e)
+        self.last_end = e
+        lo, hi = self.box.low, self.box.high
+        sweep = ang if not turns else curves.TAU
+        direction = 1.0 if ccw else -1.0
+        for theta, cos_t, sin_t in QUADRANTS:
+            if ((theta - a0) * direction) % curves.TAU < sweep:
+                pu, pv = cu + rad * cos_t, cv + rad * sin_t
+                if pu < lo[0]:
+                    lo[0] = pu
+                if pu > hi[0]:
+                    hi[0] = pu
+                if pv < lo[1]:
+                    lo[1] = pv
+                if pv > hi[1]:
+                    hi[1] = pv
+        fast = self.kind_keys
+        if fast is None:
+            key = self._key(ARC, line)
+        else:
+            key = fast[ARC]
+            self.keys.add(key)
+        flag = 1.0 if ccw else 0.0
+        if sweep >= curves.TAU - 1e-9:  # whole turns: the circle, as two halves
+            mu, mv = 2.0 * cu - u0, 2.0 * cv - v0
+            self.spool.add((ARC_2D, key, 0.0, u0, v0, mu, mv, rad, 0.0, flag, 0.0))
+            self.spool.add((ARC_2D, key, 0.0, mu, mv, u0, v0, rad, 0.0, flag, 0.0))
+        else:
+            self.spool.add((ARC_2D, key, 0.0, u0, v0, u1, v1, rad,
+                            1.0 if sweep > math.pi else 0.0, flag, 0.0))
+        return True
+
     def _exact(self, f: curves.Frame, key: float, ccw: bool) -> None:
         """An arc in the plane of the drawing: SVG arcs (two halves for a whole circle)."""
-        r = f.r0
+        r = 0.5 * (f.r0 + f.r1)
         sweep = min(f.sweep, curves.TAU)
         halves = 2 if sweep >= curves.TAU - 1e-9 else 1
         t0 = 0.0
@@ -286,6 +417,7 @@ class Scene:
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
         self.drawing = True
         self.plunge = None
+        self.last_end = None
         to_machine = self.toolpath.frame.to_machine
         prog = self.toolpath.prog
         z, abc = prog[2], prog[3:]

@@ -137,64 +137,64 @@ def _paths(out: TextIO, records: Iterable[tuple[float, ...]], colors: Colors,
     :data:`PATH_SEGMENTS` each); return the marks.  Lines that end within ``join`` (half a
     pixel) of the pen are held and drawn as one."""
     marks: list[tuple[float, ...]] = []
-    style: tuple[float, float] | None = None
+    key = dashed = math.nan  # the path's style
     parts: list[str] = []
     count = 0
-    at: tuple[float, float] | None = None  # where the pen is
-    held: tuple[float, float] | None = None  # the end of lines joined since, not yet drawn
-
-    def draw_held() -> None:
-        nonlocal at, held
-        if held is not None:
-            parts.append(f"L{_n(held[0])} {_n(held[1])}")
-            at, held = held, None
+    pu = pv = math.nan  # where the pen is
+    hu = hv = math.nan  # the end of lines joined since, not yet drawn (nan: none)
+    held = False
 
     def close() -> None:
-        nonlocal parts, count, at
-        draw_held()
-        if parts and style is not None:
-            cls = "p r" if style[1] else "p"
-            out.write(f'<path class="{cls}" stroke="{colors(style[0], bool(style[1]))}" '
+        if parts:
+            cls = "p r" if dashed else "p"
+            out.write(f'<path class="{cls}" stroke="{colors(key, bool(dashed))}" '
                       f'd="{"".join(parts)}"/>\n')
-        parts, count, at = [], 0, None
 
     for rec in records:
         kind = rec[0]
         if kind == MARK:
             marks.append(rec)
             continue
-        key = (rec[1], rec[2])
-        if key != style or count >= PATH_SEGMENTS:
+        if rec[1] != key or rec[2] != dashed or count >= PATH_SEGMENTS:
+            if held:
+                parts.append(f"L{_n(hu)} {_n(hv)}")
+                held = False
             close()
-            style = key
-        start = (rec[3], rec[4])
-        if (held if held is not None else at) != start:
-            draw_held()
-            parts.append(f"M{_n(start[0])} {_n(start[1])}")
-            at = start
+            parts, count, pu, pv = [], 0, math.nan, math.nan
+            key, dashed = rec[1], rec[2]
+        x0, y0 = rec[3], rec[4]
+        if held:
+            if hu != x0 or hv != y0:
+                parts.append(f"L{_n(hu)} {_n(hv)}M{_n(x0)} {_n(y0)}")
+                pu, pv, held = x0, y0, False
+        elif pu != x0 or pv != y0:
+            parts.append(f"M{_n(x0)} {_n(y0)}")
+            pu, pv = x0, y0
         count += 1
         if kind == LINE:
             x1, y1 = rec[5], rec[6]
-            assert at is not None
-            if abs(x1 - at[0]) + abs(y1 - at[1]) < join:
-                held = (x1, y1)
+            if abs(x1 - pu) + abs(y1 - pv) < join:
+                hu, hv, held = x1, y1, True
             else:
                 parts.append(f"L{_n(x1)} {_n(y1)}")
-                at, held = (x1, y1), None
+                pu, pv, held = x1, y1, False
             continue
-        draw_held()
+        if held:
+            parts.append(f"L{_n(hu)} {_n(hv)}")
+            pu, pv, held = hu, hv, False
         if kind == ARC_2D:
-            r = rec[7]
-            parts.append(f"A{_n(r)} {_n(r)} 0 {int(rec[8])} {int(rec[9])} "
-                         f"{_n(rec[5])} {_n(rec[6])}")
-            at = (rec[5], rec[6])
+            r = _n(rec[7])
+            parts.append(f"A{r} {r} 0 {int(rec[8])} {int(rec[9])} {_n(rec[5])} {_n(rec[6])}")
+            pu, pv = rec[5], rec[6]
         elif kind == CUBIC:
             parts.append(f"C{_n(rec[5])} {_n(rec[6])} {_n(rec[7])} {_n(rec[8])} "
                          f"{_n(rec[9])} {_n(rec[10])}")
-            at = (rec[9], rec[10])
+            pu, pv = rec[9], rec[10]
         elif kind == QUAD:
             parts.append(f"Q{_n(rec[5])} {_n(rec[6])} {_n(rec[7])} {_n(rec[8])}")
-            at = (rec[7], rec[8])
+            pu, pv = rec[7], rec[8]
+    if held:
+        parts.append(f"L{_n(hu)} {_n(hv)}")
     close()
     return marks
 

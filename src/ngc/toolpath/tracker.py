@@ -32,6 +32,8 @@ PLANES = {"CANON_PLANE_XY": (0, 1, 2), "CANON_PLANE_YZ": (1, 2, 0),
           "CANON_PLANE_XZ": (2, 0, 1)}
 PLANE_NAMES = {v: k[len("CANON_PLANE_"):] for k, v in PLANES.items()}
 NORMALS = {(0, 1, 2): (0.0, 0.0, 1.0), (1, 2, 0): (1.0, 0.0, 0.0), (2, 0, 1): (0.0, 1.0, 0.0)}
+XY = PLANES["CANON_PLANE_XY"]
+Z_UP = NORMALS[XY]
 
 Vec = tuple[float, float, float]
 
@@ -169,13 +171,22 @@ class Toolpath:
         self._line(PROBE, op, line)
 
     def _arc(self, op: ops.ArcFeed, line: int) -> None:
-        p1, p2, pn = plane = self.plane
+        plane = self.plane
+        frame = self.frame
+        if plane is XY and frame.identity:  # (the common case, kept quick)
+            end: Pos = (op[0], op[1], op[5], op[6], op[7], op[8])
+            self.prog_end = end
+            self._consumer.arc(ArcMove(self.pos, end, (op[2], op[3], op[5]), Z_UP, op[4], op,
+                                       self.prog), line)
+            self.pos = end
+            self.prog = end
+            return
+        p1, p2, pn = plane
         prog = [0.0, 0.0, 0.0, op.a, op.b, op.c]
         prog[p1], prog[p2], prog[pn] = op.first_end, op.second_end, op.axis_end_point
         centre = [0.0, 0.0, 0.0]
         centre[p1], centre[p2], centre[pn] = op.first_axis, op.second_axis, op.axis_end_point
-        frame = self.frame
-        end: Pos = tuple(prog)  # type: ignore[assignment]
+        end = tuple(prog)  # type: ignore[assignment]
         self.prog_end = end
         normal = NORMALS[plane]
         if frame.identity:
