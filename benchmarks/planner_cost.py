@@ -1,4 +1,5 @@
-"""What planning costs on top of interpretation: ``ngc time FILE`` against ``ngc canon FILE``.
+"""What planning (or drawing) costs on top of interpretation: ``ngc time FILE`` (or ``ngc plot
+FILE -o OUT.svg``, ``--command plot``) against ``ngc canon FILE``.
 
 ``ngc canon`` interprets a program and prints its canonical operations; ``ngc time`` interprets it
 the same way and runs every move through the look-ahead planner instead of printing it.  The
@@ -77,13 +78,24 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--runs", type=int, default=7, help="timed pairs (default: %(default)s)")
     ap.add_argument("--shared", type=Path, default=DEFAULT_SHARED)
     ap.add_argument("--out-dir", type=Path, default=DEFAULT_OUT_DIR)
+    ap.add_argument("--command", choices=("time", "plot"), default="time",
+                    help="the command measured against canon (plot: an SVG in a scratch "
+                    "directory; default: %(default)s)")
     args = ap.parse_args(argv)
     ngc = shlex.split(args.ngc)
-    canon, timed = [*ngc, "canon"], [*ngc, "time"]
-    print(f"machine: {machine_name()}; `{args.ngc} canon|time FILE`; {args.runs} pairs, "
+    with tempfile.TemporaryDirectory(prefix="ngc-cost-") as scratch:
+        canon = [*ngc, "canon"]
+        timed = ([*ngc, "time"] if args.command == "time"
+                 else [*ngc, "plot", "-o", str(Path(scratch) / "out.svg")])
+        return _measure(args, canon, timed)
+
+
+def _measure(args: argparse.Namespace, canon: list[str], timed: list[str]) -> int:
+    cmd = args.command
+    print(f"machine: {machine_name()}; `{args.ngc} canon|{cmd} FILE`; {args.runs} pairs, "
           "medians\n")
-    print("| program | lines | canon wall s | time wall s | time / canon (wall) "
-          "| time / canon (cpu) | time peak MiB at 25 / 50 / 100 % |")
+    print(f"| program | lines | canon wall s | {cmd} wall s | {cmd} / canon (wall) "
+          f"| {cmd} / canon (cpu) | {cmd} peak MiB at 25 / 50 / 100 % |")
     print("|---|---:|---:|---:|---:|---:|---|")
     for kind in [k for k in args.kinds.split(",") if k]:
         try:

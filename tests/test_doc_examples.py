@@ -45,6 +45,28 @@ def test_command_runs(doc: str, command: str, tmp_path: Path) -> None:
     assert done.returncode == 0, done.stderr
 
 
+PYTHON = re.compile(r"```python\n(.*?)```", re.S)
+
+
+def _python_blocks() -> list[tuple[str, int, str]]:
+    return [(doc.relative_to(ROOT).as_posix(), i, block) for doc in DOCS
+            for i, block in enumerate(PYTHON.findall(doc.read_text()))]
+
+
+PYTHON_BLOCKS = _python_blocks()
+
+
+@pytest.mark.parametrize(("doc", "index", "code"), PYTHON_BLOCKS,
+                         ids=[f"{d}: python block {i + 1}" for d, i, _ in PYTHON_BLOCKS])
+def test_python_block_runs(doc: str, index: int, code: str, tmp_path: Path) -> None:
+    shutil.copytree(ROOT / "examples", tmp_path / "examples")
+    done = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=300,
+                          env={"PATH": "/usr/bin:/bin", "PYTHONPATH": str(ROOT / "src"),
+                               "HOME": str(tmp_path)})
+    assert done.returncode == 0, done.stderr
+
+
 PICTURES = re.compile(r"!\[[^\]]*\]\((docs/images/[^)]+\.svg)\)<!-- (ngc plot [^>]*) -->")
 
 

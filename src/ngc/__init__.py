@@ -23,6 +23,11 @@ Canonical operations and sinks:
   ``flush()``.  Sinks provided: ``ngc.canon.text.TextSink`` (rs274's transcript),
   ``ngc.canon.jsonl.JsonSink`` (strict JSON lines), ``ngc.canon.jsonl.ListSink`` (in memory).
 
+The front door, :class:`Program`: ``Program.load(path_or_text, tools=..., ini=..., vars=...,
+probe=..., dialect=...)``, then ``check()``, ``moves()`` (the toolpath in machine coordinates,
+:mod:`ngc.toolpath`), ``walk(on_move)`` (the same, streamed), ``time(machine)`` and
+``plot(output, view=...)``; in Jupyter a program shows as its drawing.
+
 Checking and summing up motion:
 
 * :func:`check_file` — run a program file (writing no file), returning a :class:`CheckResult`:
@@ -54,6 +59,7 @@ if TYPE_CHECKING:
     from .config.probe import Probe
     from .engine import Setup as EngineSetup
     from .engine_report import EngineCheckResult, EngineSummary
+    from .program import Program
     from .report import CheckResult, Summary, check_file, summarize
 
 __version__ = "0.1.0"
@@ -65,6 +71,7 @@ __all__ = [
     "Interpreter",
     "NgcError",
     "Op",
+    "Program",
     "Sink",
     "Summary",
     "check_file",
@@ -132,6 +139,10 @@ class _Package(types.ModuleType):
             from . import report
 
             return getattr(report, name)
+        if name == "Program":
+            from .program import Program
+
+            return Program
         if name in self._LAZY_ENGINE:
             from . import engine_report
 
@@ -139,7 +150,7 @@ class _Package(types.ModuleType):
         raise AttributeError(f"module 'ngc' has no attribute {name!r}")
 
     def __dir__(self) -> list[str]:
-        return sorted({*super().__dir__(), *self._LAZY, *self._LAZY_ENGINE})
+        return sorted({*super().__dir__(), *self._LAZY, *self._LAZY_ENGINE, "Program"})
 
 
 sys.modules[__name__].__class__ = _Package
