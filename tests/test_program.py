@@ -78,7 +78,7 @@ def test_a_program_error_is_raised_where_it_stops() -> None:
 
 
 def test_bad_inputs_are_named() -> None:
-    with pytest.raises(NgcConfigError, match="nowhere.tbl"):
+    with pytest.raises(NgcConfigError, match=r"nowhere\.tbl"):
         ngc.Program.load("M2\n", tools="nowhere.tbl")
     with pytest.raises(ValueError, match="unknown dialect"):
         ngc.Program.load("M2\n", dialect="fanuc")
