@@ -24,8 +24,8 @@ from cli_helpers import run
 from ngc import time_report
 from ngc.planner import timing, trajectory
 from ngc.planner.geometry import Line
-from ngc.planner.lookahead import Segment
 from ngc.planner.machine import DEFAULT_MACHINE
+from ngc.planner.segment import Segment
 from ngc.planner.timing import time_file, time_lines
 from ngc.planner.trajectory import Profile, TrajectoryWriter, sample
 from test_progress import on_terminal, painted_and_erased

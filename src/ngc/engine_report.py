@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from .budget import DEFAULT_MAX_ITERATIONS
+from .check_common import error_record, headline
 from .errors import NgcError
 
 if TYPE_CHECKING:
@@ -231,8 +232,6 @@ def _kinds(values: Mapping[str, float], number: str) -> str:
 
 def render(result: EngineCheckResult) -> str:
     """``ngc check``'s paragraph on an engine program (the error itself goes to stderr)."""
-    from .report import headline
-
     s = result.summary
     head = headline(result.path, result.error)
     counts = ", ".join(f"{n} {kind}" for kind, n in s.segments.items())
@@ -258,8 +257,6 @@ def _extents_text(s: EngineSummary) -> str:
 def record(result: EngineCheckResult) -> dict[str, object]:
     """``ngc check --format json``'s object for an engine program: the LinuxCNC record's
     ``file``, ``ok``, ``lines``, ``error``, and ``"dialect": "engine"`` and its own summary."""
-    from .report import error_record
-
     s = result.summary
     extents = None
     if s.extents:

@@ -46,8 +46,6 @@ class Recovery:
         return self.mode == CONTINUE or self.mdi()
 
     def report(self, exc: NgcError) -> None:
-        from .rs274 import report
-
         self.sink.flush()
         report(self.err, exc)
 
@@ -73,3 +71,14 @@ class Recovery:
             self.stdin = sys.stdin if buffer is None else io.TextIOWrapper(
                 buffer, encoding="latin-1", newline="\n")
         return self.stdin
+
+
+# rs274 keeps an error message in a 255-byte buffer: a longer one is cut.
+MAX_MESSAGE = 254
+
+
+def report(err: TextIO, exc: NgcError, message: str | None = None) -> None:
+    """rs274's error report: the message (cut as rs274 cuts it), then the source line."""
+    err.write(f"{(exc.message if message is None else message)[:MAX_MESSAGE]}\n")
+    if exc.source is not None:
+        err.write(f"{exc.source}\n")

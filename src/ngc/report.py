@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, Literal, overload
 
 from .canon import ops
 from .canon.ops import Op, Sink
+from .check_common import error_record, headline
 from .errors import NgcError
 from .interp.interpreter import Interpreter
 from .interp.source import ProgramReader, open_text_program
@@ -425,15 +426,6 @@ class _CountedLines:
         return self.count + sum(1 for _ in self._lines)
 
 
-def headline(path: str, error: NgcError | None) -> str:
-    """The start of ``ngc check``'s paragraph on a file: ok, or where the error stopped it."""
-    if error is None:
-        return f"{path}: ok"
-    if error.line is None:
-        return f"{path}: error"
-    return f"{path}: stopped by an error at line {error.line}"
-
-
 def render(result: CheckResult) -> str:
     """``ngc check``'s report on one file: a paragraph with the line count, the moves, the path
     lengths and the extents (the error itself goes to stderr)."""
@@ -463,14 +455,6 @@ def _extents_text(s: Summary) -> str:
         return "none (no motion)"
     lo, hi = s.extents.low, s.extents.high
     return "  ".join(f"{a} {lo[i]:.4f} .. {hi[i]:.4f}" for i, a in enumerate("XYZ")) + f" {s.units}"
-
-
-def error_record(error: NgcError) -> dict[str, object]:
-    """An error as a JSON-ready mapping: message, file, line, column (1 when only the line is
-    known, as in :meth:`NgcError.where`), source line."""
-    column = error.column or (None if error.line is None else 1)
-    return {"message": error.message, "file": error.file, "line": error.line,
-            "column": column, "source": error.source}
 
 
 def _finite_or_none(value: float) -> float | None:

@@ -36,7 +36,7 @@ from .interp.interpreter import Interpreter
 from .interp.source import BOM, ProgramReader, open_program
 from .options import MachineOptions, Setup, new_interpreter, parse_positive
 from .progress import Progress, descriptor, is_terminal
-from .recovery import Recovery
+from .recovery import Recovery, report
 
 # What rs274 prints after a bad command line (on stderr, exit 1).
 USAGE = """\
@@ -428,14 +428,3 @@ def _save(path: str, interp: Interpreter, err: TextIO) -> None:
     """Write the parameter file (atomically); rs274 reports a failed link or rename and goes on."""
     for message in write_var_file(path, interp.params.numbered):
         err.write(f"{_as_read(message)}\n")
-
-
-# rs274 keeps an error message in a 255-byte buffer: a longer one is cut.
-MAX_MESSAGE = 254
-
-
-def report(err: TextIO, exc: NgcError, message: str | None = None) -> None:
-    """rs274's error report: the message (cut as rs274 cuts it), then the source line."""
-    err.write(f"{(exc.message if message is None else message)[:MAX_MESSAGE]}\n")
-    if exc.source is not None:
-        err.write(f"{exc.source}\n")

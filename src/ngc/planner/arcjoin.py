@@ -27,7 +27,7 @@ WIDE_BLEND_SWEEP = math.radians(123.75)
 SQRT3_4 = math.sqrt(3.0) / 4.0
 
 if TYPE_CHECKING:
-    from .lookahead import Segment, Shape
+    from .segment import Segment, Shape
 
 
 def helical(shape: Shape) -> bool:

@@ -23,8 +23,9 @@ from ..toolpath.tracker import PROBE as PROBE_MOVE
 from ..toolpath.tracker import RAPID as RAPID_MOVE
 from ..toolpath.tracker import ArcMove, Toolpath
 from .geometry import Line, Pos, Vec, arc_from_canon, cubic_biarcs, nurbs_polyline
-from .lookahead import ARC, EXACT, FEED, PARABOLIC, RAPID, SQRT3_2, STOP, Planner, Segment
+from .lookahead import SQRT3_2, Planner
 from .machine import MAX_COORDINATE, Machine
+from .segment import ARC, EXACT, FEED, PARABOLIC, RAPID, STOP, Segment
 
 MM_PER_INCH = 25.4
 INITIAL_ARC_TOLERANCE_INCH = 0.001  # inch: the corner tolerance for arcs before any G61/G64

@@ -24,9 +24,10 @@ from ..interp.interpreter import Interpreter
 from ..interp.source import ProgramReader, text_reader
 from ..options import MachineOptions, load_setup, new_interpreter
 from ..toolpath.tracker import Toolpath
-from .lookahead import BLEND, MAX_SECONDS, Planner, Segment, TooLong
+from .lookahead import MAX_SECONDS, Planner, TooLong
 from .machine import DEFAULT_MACHINE, Machine
 from .moves import PathSink
+from .segment import BLEND, Segment
 
 KINDS = ("rapid", "feed", "arc", "dwell", "tool change", "spindle", "wait")
 

@@ -24,8 +24,8 @@ from itertools import islice
 from typing import Protocol
 
 from .geometry import Pos
-from .lookahead import Segment
 from .machine import Machine
+from .segment import Segment
 
 POSITION_AXES = "XYZABC"  # the order of a planner position
 ALWAYS = "XYZ"  # columns written whatever the machine's axes

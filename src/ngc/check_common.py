@@ -1,0 +1,24 @@
+"""What ``ngc check``'s reports share between the dialects (:mod:`ngc.report` for LinuxCNC
+programs, :mod:`ngc.engine_report` for engine ones): a file's headline, and an error as a
+JSON-ready record."""
+
+from __future__ import annotations
+
+from .errors import NgcError
+
+
+def headline(path: str, error: NgcError | None) -> str:
+    """The start of ``ngc check``'s paragraph on a file: ok, or where the error stopped it."""
+    if error is None:
+        return f"{path}: ok"
+    if error.line is None:
+        return f"{path}: error"
+    return f"{path}: stopped by an error at line {error.line}"
+
+
+def error_record(error: NgcError) -> dict[str, object]:
+    """An error as a JSON-ready mapping: message, file, line, column (1 when only the line is
+    known, as in :meth:`NgcError.where`), source line."""
+    column = error.column or (None if error.line is None else 1)
+    return {"message": error.message, "file": error.file, "line": error.line,
+            "column": column, "source": error.source}
