@@ -185,9 +185,9 @@ def _add_plot(sub: argparse._SubParsersAction[argparse.ArgumentParser],
     plot.add_argument("file", metavar="FILE", help="the program (- for standard input)")
     plot.add_argument("-o", "--output", metavar="OUT", required=True,
                       help="the picture: OUT.svg, or OUT.png (needs: pip install 'ngc[png]')")
-    plot.add_argument("--view", choices=tuple(VIEW_NAMES), default="top",
+    plot.add_argument("--view", choices=("auto", *VIEW_NAMES), default="auto",
                       help="top (XY), front (XZ), side (YZ), iso (isometric) or lathe (Z right, "
-                      "X up); default top")
+                      "X up); default auto: lathe for a program with G7 or G8, else top")
     plot.add_argument("--color", choices=("kind", "tool", "feed", "line"), default="kind",
                       help="what the colours show: the kind of move (default), the tool, the "
                       "feed or the line number")
@@ -595,7 +595,9 @@ def run_plot(options: argparse.Namespace) -> int:
             return EXIT_USAGE
         if program.handle is None:
             return _cannot_open("plot", program)
-        how = plot.PlotOptions(view=options.view, color=options.color, width=options.size[0],
+        view = (plot.auto_view_of_file(options.file) if options.view == "auto"
+                else options.view)
+        how = plot.PlotOptions(view=view, color=options.color, width=options.size[0],
                                height=options.size[1], dpi=options.dpi,
                                approach=options.approach)
         handle = text_reader(program.handle)

@@ -143,14 +143,18 @@ class Program:
         self._run(timer.sink)
         return timer.finish()
 
-    def plot(self, output: str | None = None, *, view: str = "top", color: str = "kind",
+    def plot(self, output: str | None = None, *, view: str = "auto", color: str = "kind",
              size: tuple[int, int] = (1200, 900)) -> str:
         """Draw the toolpath (see ``ngc plot``) to ``output`` (``.svg`` or ``.png``) and return
-        its path; with no ``output``, return the SVG text.  A program that stops on an error is
-        drawn up to it, the error written on the drawing."""
-        from .commands.plot import PlotOptions
+        its path; with no ``output``, return the SVG text.  ``view``: ``top``, ``front``,
+        ``side``, ``iso``, ``lathe`` or ``auto`` (lathe for a program with G7 or G8, else top).
+        A program that stops on an error is drawn up to it, the error written on the drawing."""
+        from .commands.plot import PlotOptions, auto_view, auto_view_of_file
 
         self._linuxcnc_only()
+        if view == "auto":
+            view = (auto_view(self.text.encode("utf-8", "surrogateescape"))
+                    if self.text is not None else auto_view_of_file(str(self.path)))
         how = PlotOptions(view=view, color=color, width=size[0], height=size[1])
         if output is not None:
             self._draw(output, how)

@@ -10,6 +10,7 @@ marked and the message written on the drawing.
 from __future__ import annotations
 
 import os
+import re
 import tempfile
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, NamedTuple
@@ -28,6 +29,32 @@ if TYPE_CHECKING:
     from ..planner.timing import Timer
 
 FORMATS = ("svg", "png")
+
+# G7 or G8 (a lathe's diameter or radius mode) outside comments: a lathe program
+_LATHE_WORD = re.compile(rb"[gG][ \t]*0*[78](?![0-9. \t]*[0-9])")
+_COMMENT = re.compile(rb"\([^)\n]*\)|;[^\n]*")
+
+
+def auto_view(data: bytes) -> str:
+    """The view ``--view auto`` takes for a program (its bytes): ``lathe`` for one that sets a
+    lathe's diameter or radius mode (G7, G8), else ``top``.
+
+    >>> auto_view(b"G18 G7\\nG1 X20 Z-5 F0.1\\n"), auto_view(b"G17 (G7 is a lathe code)\\nG1 X1\\n")
+    ('lathe', 'top')
+    """
+    return "lathe" if _LATHE_WORD.search(_COMMENT.sub(b"", data)) else "top"
+
+
+def auto_view_of_file(path: str) -> str:
+    """:func:`auto_view` of a regular file (``top`` for standard input or a file that cannot be
+    read: its error comes when it runs)."""
+    try:
+        if path == "-" or not os.path.isfile(path):
+            return "top"
+        with open(path, "rb") as handle:
+            return auto_view(handle.read())
+    except OSError:
+        return "top"
 
 
 class PlotResult(NamedTuple):
@@ -99,7 +126,8 @@ def draw(lines: Iterable[str], name: str, output: str,
     labels = svg.Labels(
         name=os.path.basename(name), units="inch" if frame.inch_program else "mm",
         mm_per_unit=25.4 if frame.inch_program else 1.0, time_s=time_s,
-        error=None if error is None else _error_text(error))
+        error=None if error is None else _error_text(error),
+        diameter=interp.machine.state.lathe_diameter)
     try:
         if fmt == "svg":
             _write_svg(output, scene, labels, options)

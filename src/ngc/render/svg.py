@@ -44,13 +44,15 @@ class Layout(NamedTuple):
 
 class Labels(NamedTuple):
     """What the drawing says about the program: its name, the units its values are given in
-    (and millimetres per unit), the cycle time if known, the error it stopped with."""
+    (and millimetres per unit), the cycle time if known, the error it stopped with, whether
+    its X values are diameters."""
 
     name: str
     units: str = "mm"
     mm_per_unit: float = 1.0
     time_s: float | None = None
     error: str | None = None
+    diameter: bool = False  # X is given as a diameter (a lathe's G7): its extent shown so
 
 
 def layout(scene: Scene, width: float, height: float) -> Layout:
@@ -290,17 +292,23 @@ def _dimensions(out: TextIO, scene: Scene, labels: Labels, lay: Layout) -> None:
         x1, y1 = lay.px(box.high[0], box.high[1])
         yd = y0 + 24.0
         w = (box.high[0] - box.low[0]) / u
+        wname = axes[0]
+        if labels.diameter and wname == "X":
+            w, wname = 2.0 * w, "X diameter"
         out.write(f'<path d="M{_p(x0)} {_p(yd)}H{_p(x1)}M{_p(x0)} {_p(yd - 5)}v10'
                   f'M{_p(x1)} {_p(yd - 5)}v10"/>'
                   f'<text x="{_p((x0 + x1) / 2)}" y="{_p(yd + 16)}" text-anchor="middle" '
-                  f'stroke="none">{axes[0]} {w:.3f} {labels.units}</text>\n')
+                  f'stroke="none">{wname} {w:.3f} {labels.units}</text>\n')
         xd = x0 - 24.0
         h = (box.high[1] - box.low[1]) / u
+        name = axes[1]
+        if labels.diameter and name == "X":
+            h, name = 2.0 * h, "X diameter"
         ym = (y0 + y1) / 2
         out.write(f'<path d="M{_p(xd)} {_p(y0)}V{_p(y1)}M{_p(xd - 5)} {_p(y0)}h10'
                   f'M{_p(xd - 5)} {_p(y1)}h10"/>'
                   f'<text x="{_p(xd - 8)}" y="{_p(ym)}" text-anchor="middle" stroke="none" '
-                  f'transform="rotate(-90 {_p(xd - 8)} {_p(ym)})">{axes[1]} {h:.3f} '
+                  f'transform="rotate(-90 {_p(xd - 8)} {_p(ym)})">{name} {h:.3f} '
                   f"{labels.units}</text>\n")
     out.write("</g>\n")
 
