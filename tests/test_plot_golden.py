@@ -11,7 +11,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).parent / "golden"))
 
-import plot_regen  # noqa: E402
+import plot_regen
 
 PROGRAMS = sorted(plot_regen.HERE.glob("*.ngc"))
 
