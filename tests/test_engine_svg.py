@@ -1,6 +1,7 @@
-"""SVG drawings of engine toolpaths (``ngc.engine.svg``): the drawings in ``docs/engine`` are what
-the module draws today, and their geometry, read back from the SVG itself, is the seed's examples';
-the viewBox holds the curves; rapids are dashed; ``python -m ngc.engine.svg``."""
+"""SVG drawings of engine toolpaths (``ngc.engine.svg``): what the module draws of the seed's
+examples (``docs/engine``, whose pictures ``ngc plot`` makes: tests/test_plot_golden.py), read back
+from the SVG itself, is the seed's geometry; the viewBox holds the curves; rapids are dashed;
+``python -m ngc.engine.svg``."""
 
 from __future__ import annotations
 
@@ -87,7 +88,8 @@ def unflipped(points: list[Point]) -> list[Point]:
 
 
 def drawing(name: str) -> str:
-    return (DRAWINGS / f"{name}.svg").read_text(encoding="utf-8")
+    """The module's drawing of the docs' example ``name``."""
+    return draw(run((DRAWINGS / f"{name}.ngc").read_text(encoding="utf-8")))
 
 
 def ellipse_distance(x: float, y: float, a: float, b: float) -> float:
@@ -108,12 +110,11 @@ def ellipse_distance(x: float, y: float, a: float, b: float) -> float:
     return math.hypot(x - a * math.cos(theta), y - b * math.sin(theta))
 
 
-# -- (a) the docs' drawings are the module's -------------------------------------------------------
+# -- (a) the docs' examples are the seed's ----------------------------------------------------------
 @pytest.mark.parametrize("name", sorted(PROGRAMS))
-def test_docs_drawing_is_drawn_from_its_program(name: str) -> None:
+def test_docs_example_is_the_seeds(name: str) -> None:
     program = (DRAWINGS / f"{name}.ngc").read_text(encoding="utf-8")
     assert program.splitlines() == ["(dialect: engine)", PROGRAMS[name]]
-    assert (DRAWINGS / f"{name}.svg").read_bytes() == draw(run(program)).encode("utf-8")
 
 
 @pytest.mark.parametrize("name", sorted(PROGRAMS))
@@ -272,7 +273,7 @@ def test_command_writes_the_drawing(tmp_path: Path) -> None:
     done = subprocess.run([sys.executable, "-m", "ngc.engine.svg", str(DRAWINGS / "oval.ngc"),
                            "-o", str(out)], capture_output=True, text=True, check=False)
     assert (done.returncode, done.stdout, done.stderr) == (0, "", "")
-    assert out.read_bytes() == (DRAWINGS / "oval.svg").read_bytes()
+    assert out.read_text(encoding="utf-8") == drawing("oval")
 
 
 def test_command_draws_on_stdout_on_a_plane(capsys: pytest.CaptureFixture[str],

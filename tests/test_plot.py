@@ -187,10 +187,18 @@ def test_bad_command_lines(tmp_path: Path, capsys: pytest.CaptureFixture[str],
     assert message in err
 
 
-def test_engine_programs_are_refused(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    src = write(tmp_path, "e.ngc", "(dialect: engine)\nF10\nfeed X2\n")
+def test_engine_programs_are_drawn_from_their_cubics(tmp_path: Path,
+                                                     capsys: pytest.CaptureFixture[str]) -> None:
+    src = write(tmp_path, "e.ngc", "(dialect: engine)\nF10\nfeed X2 Y1\nG2 X4 Y1 I1\n")
     code, _, err = run(capsys, "plot", src, "-o", str(tmp_path / "e.svg"))
+    assert code == 0, err
+    _, segments, _ = read_svg((tmp_path / "e.svg").read_text())
+    assert {s.kind for s in segments} == {"M", "C"}
+    assert max(s.end[0] for s in segments) == pytest.approx(4.0)
+    code, _, err = run(capsys, "plot", src, "-o", str(tmp_path / "e.svg"), "--time")
     assert code == 2 and "engine dialect" in err
+    code, _, err = run(capsys, "plot", src, "-o", str(tmp_path / "e.svg"), "-t", src)
+    assert code == 2
 
 
 def test_an_unreadable_program(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

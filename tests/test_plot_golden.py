@@ -23,6 +23,17 @@ def test_the_set_covers_the_kinds_of_move() -> None:
             "error-stop", "tools"} <= names
 
 
+ENGINE_DOCS = sorted((Path(__file__).resolve().parent.parent / "docs" / "engine").glob("*.ngc"))
+
+
+@pytest.mark.parametrize("program", ENGINE_DOCS, ids=[p.stem for p in ENGINE_DOCS])
+def test_engine_docs_pictures_are_ngc_plots(program: Path, tmp_path: Path) -> None:
+    """The engine dialect's pictures (docs/engine-dialect.md) are what ngc plot makes."""
+    out = tmp_path / "out.svg"
+    assert plot_regen.draw(program, out) == 0
+    assert out.read_text() == program.with_suffix(".svg").read_text()
+
+
 @pytest.mark.parametrize("program", PROGRAMS, ids=[p.stem for p in PROGRAMS])
 def test_drawing(program: Path, tmp_path: Path) -> None:
     out = tmp_path / "out.svg"

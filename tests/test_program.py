@@ -84,9 +84,11 @@ def test_bad_inputs_are_named() -> None:
         ngc.Program.load("M2\n", dialect="fanuc")
 
 
-def test_engine_programs_check_but_do_not_draw() -> None:
+def test_engine_programs() -> None:
     p = ngc.Program.load("(dialect: engine)\nF10\nfeed X2\n")
     assert p.dialect == "engine" and p.check().ok
+    (move,) = p.moves()
+    assert isinstance(move, Move) and move.kind == "bezier" and move.end[0] == 2.0
+    assert p._repr_svg_().startswith("<svg")
     with pytest.raises(ValueError, match="engine dialect"):
-        p.moves()
-    assert p._repr_svg_() == ""
+        p.time()

@@ -48,6 +48,7 @@ EXIT_INTERRUPTED = 130  # 128 + SIGINT, what shells report for Ctrl-C
 EXIT_BROKEN_PIPE = 141  # 128 + SIGPIPE, what a C filter killed by SIGPIPE reports
 
 if TYPE_CHECKING:
+    from .commands.plot import PlotOptions
     from .engine import Setup as EngineSetup
     from .planner.machine import Machine as PlannerMachine
     from .planner.timing import TimeResult
@@ -168,7 +169,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     check.set_defaults(run=run_check)
     _add_time(sub, [_machine_options()])
-    _add_plot(sub, [_machine_options()])
+    _add_plot(sub, [_machine_options(), _dialect_options()])
     return parser
 
 
@@ -176,7 +177,7 @@ def _add_plot(sub: argparse._SubParsersAction[argparse.ArgumentParser],
               parents: list[argparse.ArgumentParser]) -> None:
     plot = sub.add_parser(
         "plot", parents=parents, help="draw a program's toolpath as SVG or PNG",
-        description="Run a LinuxCNC program and draw its toolpath in machine coordinates: "
+        description="Run a program and draw its toolpath in machine coordinates: "
         "rapids dashed, feeds solid, arcs exact, drill points and tool changes marked, the "
         "extents as dimension lines in the program's units. A program that stops on an error "
         "is drawn up to the error, the point marked and the message on the drawing (exit 1).",
@@ -202,8 +203,6 @@ def _add_plot(sub: argparse._SubParsersAction[argparse.ArgumentParser],
                       "time on the drawing")
     plot.add_argument("--machine", metavar="TOML", dest="machine_file",
                       help="with --time: ngc's TOML machine file, over the default machine")
-    plot.add_argument("--dialect", choices=dialects.DIALECTS, default=None,
-                      help="the program's dialect; ngc plot draws LinuxCNC programs")
     plot.set_defaults(run=run_plot)
 
 
@@ -567,9 +566,9 @@ NOT_LINUXCNC = "ngc time runs LinuxCNC programs; {name} is in the engine dialect
 
 def run_plot(options: argparse.Namespace) -> int:
     """``ngc plot FILE -o OUT``: the toolpath drawn to OUT (.svg or .png).  Exit 2 for a bad
-    command line or machine input, a file that cannot be read or written, an engine-dialect
-    program or a missing PNG renderer; 1 when the program stopped on an error (the picture is
-    written all the same, the error also on stderr)."""
+    command line or machine input, a file that cannot be read or written, ``--time`` with an
+    engine-dialect program or a missing PNG renderer; 1 when the program stopped on an error
+    (the picture is written all the same, the error also on stderr)."""
     from .commands import plot
 
     try:
@@ -579,10 +578,12 @@ def run_plot(options: argparse.Namespace) -> int:
         return EXIT_USAGE
     program = _open_marked(options.file, options.dialect)
     try:
-        if program.dialect == ENGINE:
-            sys.stderr.write(f"ngc plot: draws LinuxCNC programs; {program.name} is in the "
-                             "engine dialect (python -m ngc.engine.svg draws those)\n")
+        conflict = _inputs_conflict(options, program.dialect)
+        if conflict is not None:
+            sys.stderr.write(f"ngc plot: {conflict}\n")
             return EXIT_USAGE
+        if program.dialect == ENGINE:
+            return _plot_engine(options, program)
         try:
             inputs, setup = _setup("plot", options)
             machine = None
@@ -597,9 +598,7 @@ def run_plot(options: argparse.Namespace) -> int:
             return _cannot_open("plot", program)
         view = (plot.auto_view_of_file(options.file) if options.view == "auto"
                 else options.view)
-        how = plot.PlotOptions(view=view, color=options.color, width=options.size[0],
-                               height=options.size[1], dpi=options.dpi,
-                               approach=options.approach)
+        how = _plot_options(options, view)
         handle = text_reader(program.handle)
         try:
             with handle, _progress(program.name, handle, output_to_terminal=False) as progress:
@@ -616,6 +615,46 @@ def run_plot(options: argparse.Namespace) -> int:
             return EXIT_USAGE
     finally:
         program.close()
+    if result.error is not None:
+        sys.stderr.write(result.error.render() + "\n")
+        return EXIT_PROGRAM_ERROR
+    return EXIT_OK
+
+
+def _plot_options(options: argparse.Namespace, view: str) -> PlotOptions:
+    from .commands.plot import PlotOptions
+
+    return PlotOptions(view=view, color=options.color, width=options.size[0],
+                       height=options.size[1], dpi=options.dpi, approach=options.approach)
+
+
+def _plot_engine(options: argparse.Namespace, program: Program) -> int:
+    """An engine-dialect program drawn from its segments (``--time`` is ngc time's: refused)."""
+    from .commands import plot
+
+    if options.time:
+        sys.stderr.write(f"ngc plot: --time needs a LinuxCNC program; {program.name} is in the "
+                         "engine dialect (ngc check prints its time)\n")
+        return EXIT_USAGE
+    try:
+        setup = _engine_setup(options)
+    except NgcConfigError as exc:
+        sys.stderr.write(f"ngc plot: {exc.message}\n")
+        return EXIT_USAGE
+    if program.handle is None:
+        return _cannot_open("plot", program)
+    text = dialects.read_text(program.handle)
+    view = "top" if options.view == "auto" else options.view
+    try:
+        result = plot.draw_engine(text, program.name, options.output,
+                                  _plot_options(options, view), setup=setup,
+                                  max_iterations=options.max_iterations)
+    except NgcConfigError as exc:
+        sys.stderr.write(f"ngc plot: {exc.message}\n")
+        return EXIT_USAGE
+    except OSError as exc:
+        sys.stderr.write(f"ngc plot: cannot write {_name(options.output)}: {exc.strerror}\n")
+        return EXIT_USAGE
     if result.error is not None:
         sys.stderr.write(result.error.render() + "\n")
         return EXIT_PROGRAM_ERROR

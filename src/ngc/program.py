@@ -71,7 +71,10 @@ class Program:
 
     def _run(self, sink: Sink) -> None:
         """Run the program into ``sink``; raises :class:`NgcError` where it stops."""
-        self._linuxcnc_only()
+        if self.dialect != dialects.LINUXCNC:
+            dialects.interpret_engine(self._source_text(), sink, file=self.name,
+                                      max_iterations=self.options.max_iterations)
+            return
         setup = self._setup()
         interp = new_interpreter(sink, self.options, setup, write_files=False)
         interp.startup()
@@ -84,8 +87,8 @@ class Program:
 
     def _linuxcnc_only(self) -> None:
         if self.dialect != dialects.LINUXCNC:
-            raise ValueError(f"{self.name} is in the engine dialect: check() runs it; moves(), "
-                             "time() and plot() take LinuxCNC programs")
+            raise ValueError(f"{self.name} is in the engine dialect: time() takes LinuxCNC "
+                             "programs (check() gives an engine program's time)")
 
     def _interpreter(self, sink: Sink) -> Interpreter:
         return new_interpreter(sink, self.options, self._setup(), write_files=False)
@@ -137,6 +140,7 @@ class Program:
         from .planner.config import load_machine
         from .planner.timing import Timer
 
+        self._linuxcnc_only()
         if machine is None:
             machine = load_machine(self._setup().ini, None)
         timer = Timer(machine)
@@ -151,7 +155,6 @@ class Program:
         A program that stops on an error is drawn up to it, the error written on the drawing."""
         from .commands.plot import PlotOptions, auto_view, auto_view_of_file
 
-        self._linuxcnc_only()
         if view == "auto":
             view = (auto_view(self.text.encode("utf-8", "surrogateescape"))
                     if self.text is not None else auto_view_of_file(str(self.path)))
@@ -166,9 +169,13 @@ class Program:
                 return handle.read()
 
     def _draw(self, output: str, how: object) -> None:
-        from .commands.plot import PlotOptions, draw
+        from .commands.plot import PlotOptions, draw, draw_engine
 
         assert isinstance(how, PlotOptions)
+        if self.dialect != dialects.LINUXCNC:
+            draw_engine(self._source_text(), self.name, output, how,
+                        max_iterations=self.options.max_iterations)
+            return
         if self.text is not None:
             draw(self.text.splitlines(), self.name, output, self._interpreter, how)
             return
@@ -177,9 +184,7 @@ class Program:
             draw(reader, self.name, output, self._interpreter, how, reader=reader)
 
     def _repr_svg_(self) -> str:
-        """Jupyter shows a program as its drawing (an engine program as nothing)."""
-        if self.dialect != dialects.LINUXCNC:
-            return ""
+        """Jupyter shows a program as its drawing."""
         return self.plot(size=(800, 600))
 
 

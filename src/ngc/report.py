@@ -23,7 +23,7 @@ from .errors import NgcError
 from .interp.interpreter import Interpreter
 from .interp.source import ProgramReader, open_text_program
 from .toolpath.frame import Pos
-from .toolpath.tracker import RAPID, ArcMove, Toolpath
+from .toolpath.tracker import RAPID, ArcMove, Cubics, Toolpath
 
 if TYPE_CHECKING:
     from .engine import Setup as EngineSetup
@@ -175,6 +175,9 @@ class Summarizer:
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
         """A rigid tap is not counted (it ends where it started)."""
+
+    def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
+        """Engine programs are summed by :mod:`ngc.engine_report`."""
 
     def other(self, op: Op, line: int) -> None:
         if type(op) is ops.UseLengthUnits:

@@ -1,5 +1,6 @@
 """Write the golden drawings: ``ngc plot`` of each ``tests/golden/plot/NAME.ngc`` (its first line
-``(plot: ARGS)`` gives the options) to ``NAME.svg``.  Run after a change to the drawing that is
+``(plot: ARGS)`` gives the options) to ``NAME.svg``, and the engine dialect's pictures
+(``docs/engine/NAME.ngc``).  Run after a change to the drawing that is
 meant, and look at what changed.
 
     python tests/golden/plot_regen.py
@@ -28,8 +29,11 @@ def draw(program: Path, out: Path) -> int:
                           check=False).returncode
 
 
+ENGINE_DOCS = Path(__file__).resolve().parents[2] / "docs" / "engine"
+
+
 def main() -> int:
-    for program in sorted(HERE.glob("*.ngc")):
+    for program in sorted([*HERE.glob("*.ngc"), *ENGINE_DOCS.glob("*.ngc")]):
         code = draw(program, program.with_suffix(".svg"))
         print(f"{program.name}: exit {code}")
     return 0

@@ -15,6 +15,8 @@ import tempfile
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, NamedTuple
 
+from .. import dialects
+from ..budget import DEFAULT_MAX_ITERATIONS
 from ..canon.ops import Sink
 from ..errors import NgcError
 from ..interp.interpreter import Interpreter
@@ -25,6 +27,7 @@ from ..render.scene import VIEWS, Scene
 from ..toolpath.tracker import Tee, Toolpath
 
 if TYPE_CHECKING:
+    from ..engine import Setup as EngineSetup
     from ..planner.machine import Machine as PlannerMachine
     from ..planner.timing import Timer
 
@@ -95,7 +98,7 @@ def draw(lines: Iterable[str], name: str, output: str,
     """Run the program ``lines`` (named ``name`` in errors and on the drawing) through
     ``new_interpreter(sink)`` and draw it to ``output`` (``.svg`` or ``.png``); with a
     ``machine``, time it on that machine in the same run and print the cycle time on it."""
-    fmt = output_format(output)
+    output_format(output)  # (refused before the program runs)
     options = PlotOptions() if options is None else options
     if options.view not in VIEWS:
         raise ValueError(f"the view must be one of {', '.join(VIEWS)}, not {options.view!r}")
@@ -122,14 +125,41 @@ def draw(lines: Iterable[str], name: str, output: str,
     except NgcError as exc:
         error = exc
         scene.stop_at()
+    return _write(scene, name, output, options, error, time_s,
+                  diameter=interp.machine.state.lathe_diameter)
+
+
+def draw_engine(text: str, name: str, output: str, options: PlotOptions | None = None, *,
+                setup: EngineSetup | None = None,
+                max_iterations: int = DEFAULT_MAX_ITERATIONS) -> PlotResult:
+    """Draw an engine-dialect program (its text; ``setup``: its machine, None: the default)
+    to ``output``: each engine segment is the cubic Bézier it is, projected."""
+    output_format(output)
+    options = PlotOptions() if options is None else options
+    view = "top" if options.view == "auto" else options.view
+    if view not in VIEWS:
+        raise ValueError(f"the view must be one of {', '.join(VIEWS)}, not {options.view!r}")
+    scene = Scene(VIEWS[view], color=options.color, approach=options.approach)
+    error: NgcError | None = None
+    try:
+        dialects.interpret_engine(text, scene.toolpath, setup=setup, file=name,
+                                  max_iterations=max_iterations)
+    except NgcError as exc:
+        error = exc
+        scene.stop_at()
+    return _write(scene, name, output, options, error, None)
+
+
+def _write(scene: Scene, name: str, output: str, options: PlotOptions, error: NgcError | None,
+           time_s: float | None, *, diameter: bool = False) -> PlotResult:
+    scene.finish()
     frame = scene.toolpath.frame
     labels = svg.Labels(
         name=os.path.basename(name), units="inch" if frame.inch_program else "mm",
         mm_per_unit=25.4 if frame.inch_program else 1.0, time_s=time_s,
-        error=None if error is None else _error_text(error),
-        diameter=interp.machine.state.lathe_diameter)
+        error=None if error is None else _error_text(error), diameter=diameter)
     try:
-        if fmt == "svg":
+        if output_format(output) == "svg":
             _write_svg(output, scene, labels, options)
         else:
             _write_png(output, scene, labels, options)

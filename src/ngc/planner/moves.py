@@ -21,7 +21,7 @@ from ..canon import ops
 from ..errors import NgcError
 from ..toolpath.tracker import PROBE as PROBE_MOVE
 from ..toolpath.tracker import RAPID as RAPID_MOVE
-from ..toolpath.tracker import ArcMove, Toolpath
+from ..toolpath.tracker import ArcMove, Cubics, Toolpath
 from .geometry import Line, Pos, Vec, arc_from_canon, cubic_biarcs, nurbs_polyline
 from .lookahead import SQRT3_2, Planner
 from .machine import MAX_COORDINATE, Machine
@@ -129,6 +129,9 @@ class PathSink:
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
         self.rigid_tap(bottom, line)
+
+    def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
+        """An engine-dialect segment: the engine times its own (ngc time refuses its programs)."""
 
     def other(self, op: ops.Op, line: int) -> None:
         kind = type(op)

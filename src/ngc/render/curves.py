@@ -149,3 +149,35 @@ def extremes(f: Frame, v: Vec) -> tuple[float, float]:
             if 0.0 < t < f.sweep:
                 values.append(_dot(f.point(t), v))
     return min(values), max(values)
+
+
+def cubic_range(c: Sequence[float]) -> tuple[float, float]:
+    """The least and greatest value of the one-dimensional cubic Bézier ``c`` (its ends and
+    where its derivative is zero)."""
+    p0, p1, p2, p3 = c
+    a = -p0 + 3.0 * p1 - 3.0 * p2 + p3  # B'(t) / 3 = a t^2 + b t + k
+    b = 2.0 * (p0 - 2.0 * p1 + p2)
+    k = p1 - p0
+    ts: list[float] = []
+    if abs(a) < 1e-15:
+        if b != 0.0:
+            ts.append(-k / b)
+    else:
+        disc = b * b - 4.0 * a * k
+        if disc >= 0.0:
+            root = math.sqrt(disc)
+            ts += [(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)]
+    values = [p0, p3]
+    for t in ts:
+        if 0.0 < t < 1.0:
+            u = 1.0 - t
+            values.append(u * u * u * p0 + 3.0 * u * u * t * p1 + 3.0 * u * t * t * p2 + t * t * t * p3)
+    return min(values), max(values)
+
+
+def cubic_point(c: Sequence[Sequence[float]], t: float) -> Vec:
+    """The point at ``t`` of a cubic Bézier in space (four control points)."""
+    u = 1.0 - t
+    w = (u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t)
+    return (sum(w[i] * c[i][0] for i in range(4)), sum(w[i] * c[i][1] for i in range(4)),
+            sum(w[i] * c[i][2] for i in range(4)))

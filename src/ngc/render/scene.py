@@ -16,13 +16,24 @@ import itertools
 import math
 import tempfile
 from array import array
-from collections.abc import Iterator, Sequence
-from typing import IO, NamedTuple
+from collections.abc import Callable, Iterator, Sequence
+from typing import IO, Any, NamedTuple
 
 from ..canon import ops
 from ..planner.geometry import nurbs_polyline
 from ..toolpath.frame import Pos
-from ..toolpath.tracker import ARC, FEED, NURBS, PROBE, RAPID, SYNC, TAP, ArcMove, Toolpath
+from ..toolpath.tracker import (
+    ARC,
+    FEED,
+    NURBS,
+    PROBE,
+    RAPID,
+    SYNC,
+    TAP,
+    ArcMove,
+    Cubics,
+    Toolpath,
+)
 from . import curves
 
 Vec = tuple[float, float, float]
@@ -65,6 +76,8 @@ KIND_INDEX[ARC] = KIND_INDEX[FEED]  # (an arc is a feed: one colour, one path fo
 
 QUADRANTS = ((0.0, 1.0, 0.0), (0.5 * math.pi, 0.0, 1.0), (math.pi, -1.0, 0.0),
              (1.5 * math.pi, 0.0, -1.0))  # (angle, cos, sin) where a circle is widest
+
+HELD = 10000  # rapids of the approach held back at most
 
 RECORD = 11  # doubles a record holds: type, key, dashed, then up to eight coordinates
 
@@ -158,6 +171,7 @@ class Scene:
         self.view = view
         self.color = color
         self.drawing = approach  # drawing rapids already
+        self.held: list[tuple[Callable[..., None], tuple[Any, ...]]] = []  # the approach's rapids
         self.toolpath = Toolpath(self, inch_machine=inch_machine) if toolpath is None else toolpath
         self.spool = Spool()
         self.box = Box(2)
@@ -248,9 +262,10 @@ class Scene:
             self._plunged(start, end, line)
         if kind is RAPID:
             if not self.drawing:
+                self._hold(self.straight, (kind, start, end, line))
                 return
-        else:
-            self.drawing = True
+        elif not self.drawing:
+            self._cutting()
         if start is not self.last_end or self.kind_keys is None:
             self._line(kind, start, end, line)
             return
@@ -302,7 +317,8 @@ class Scene:
             self.mark(DRILL, held[0])
 
     def arc(self, arc: ArcMove, line: int) -> None:
-        self.drawing = True
+        if not self.drawing:
+            self._cutting()
         self.plunge = None
         if self._facing(arc, line):
             return
@@ -415,7 +431,8 @@ class Scene:
             t0 = t1
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
-        self.drawing = True
+        if not self.drawing:
+            self._cutting()
         self.plunge = None
         self.last_end = None
         to_machine = self.toolpath.frame.to_machine
@@ -442,8 +459,40 @@ class Scene:
             self._line(NURBS, prev, p, line)
             prev = p
 
+    def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
+        """An engine-dialect segment: its projection is the cubic of the projected control
+        points, drawn as it is."""
+        kind = RAPID if motion == "rapid" else PROBE if motion == "probe" else FEED
+        if kind is RAPID:
+            if not self.drawing:
+                self._hold(self.bezier, (cubics, motion, start, line))
+                return
+        elif not self.drawing:
+            self._cutting()
+        self.plunge = None
+        self.last_end = None
+        pts = [(cubics[0][k], cubics[1][k], cubics[2][k]) for k in range(4)]
+        for i in range(3):
+            lo, hi = curves.cubic_range(cubics[i])
+            self.extents.add(i, lo, hi)
+        for j, axis in enumerate((self.view.right, self.view.up)):
+            lo, hi = curves.cubic_range([p[0] * axis[0] + p[1] * axis[1] + p[2] * axis[2]
+                                         for p in pts])
+            self.box.add(j, lo, hi)
+        samples = [curves.cubic_point(pts, i / 16) for i in range(17)]
+        d = sum(math.dist(a, b) for a, b in itertools.pairwise(samples))
+        self.length += d
+        if kind is RAPID:
+            self.rapid_length += d
+        uv = [self._uv(p) for p in pts]
+        if uv[0] == uv[1] == uv[2] == uv[3]:
+            return  # (no motion in the view: rotary axes alone, or along the view)
+        self.spool.add((CUBIC, self._key(kind, line), 1.0 if kind is RAPID else 0.0,
+                        *uv[0], *uv[1], *uv[2], *uv[3]))
+
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
-        self.drawing = True
+        if not self.drawing:
+            self._cutting()
         self._line(TAP, start, bottom, line)
         self.mark(DRILL, bottom)
 
@@ -458,7 +507,24 @@ class Scene:
                 self.mark(TOOL_CHANGE, self.toolpath.pos, float(tool))
 
     def finish(self) -> None:
-        """Nothing is held back."""
+        """The end of the run: a program that never cut is drawn with its rapids."""
+        if not self.drawing and self.held:
+            held, self.held = self.held, []
+            self.drawing = True
+            for method, args in held:
+                method(*args)
+
+    def _hold(self, method: Callable[..., None], args: tuple[Any, ...]) -> None:
+        """Keep a rapid of the approach back: a program that never cuts draws it after all
+        (``finish``); past :data:`HELD` of them, they are drawn."""
+        self.held.append((method, args))
+        if len(self.held) > HELD:
+            self.finish()
+
+    def _cutting(self) -> None:
+        """The first move that cuts: the approach before it is left out."""
+        self.drawing = True
+        self.held = []
 
     def stop_at(self) -> Pos:
         """Mark where the machine is: the program stopped there."""

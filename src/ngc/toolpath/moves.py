@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 from ..canon import ops
 from .frame import Pos
-from .tracker import ARC, NURBS, PLANE_NAMES, TAP, ArcMove, Toolpath, Vec
+from .tracker import ARC, BEZIER, NURBS, PLANE_NAMES, TAP, ArcMove, Cubics, Toolpath, Vec
 
 # operations a drawing or a sender marks, by the name of the event
 EVENTS: dict[type, str] = {
@@ -40,12 +40,15 @@ class Move:
     """One move of the toolpath.
 
     ``kind``: ``"rapid"``, ``"feed"``, ``"arc"``, ``"probe"``, ``"sync"`` (spindle-synchronised:
-    G33, G76), ``"tap"`` (G33.1: to ``end`` and back to ``start``) or ``"nurbs"``.  ``feed`` is
+    G33, G76), ``"tap"`` (G33.1: to ``end`` and back to ``start``), ``"nurbs"`` or ``"bezier"``
+    (an engine-dialect segment).  ``feed`` is
     the feed rate in machine units per minute (per revolution where ``feed_mode`` says so), as
     the last ``SET_FEED_RATE`` gave it; ``spindle`` the spindle speed (rpm, or surface speed
     under G96).  Arcs have ``centre`` (a point on their axis), ``normal`` (a unit vector) and
     ``turns`` (> 0 counterclockwise seen from the normal's tip, |turns| - 1 extra full turns);
-    a NURBS move has ``curve``, the call as canon gave it (program coordinates)."""
+    a NURBS move has ``curve``, the call as canon gave it (program coordinates); an engine
+    segment (``"bezier"``) has ``cubics``, the four control points of X Y Z A B C over its
+    time."""
 
     file: str | None
     line: int
@@ -64,6 +67,7 @@ class Move:
     normal: Vec | None = None
     turns: int = 0
     curve: ops.NurbsFeed | None = None
+    cubics: Cubics | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -113,6 +117,9 @@ class MoveList:
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
         self._move(TAP, start, bottom, line)
+
+    def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
+        self._move(BEZIER, start, self.toolpath.prog_end, line, cubics=cubics)
 
     def other(self, op: ops.Op, line: int) -> None:
         kind = type(op)

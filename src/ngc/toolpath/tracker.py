@@ -26,6 +26,7 @@ PROBE = "probe"
 SYNC = "sync"  # spindle-synchronised: G33, G76 (a straight feed between START/STOP_SPEED_FEED_SYNCH)
 TAP = "tap"  # G33.1 rigid tapping: down to the point and back
 NURBS = "nurbs"
+BEZIER = "bezier"  # an engine-dialect segment: a cubic Bézier on each axis
 
 # Each plane's (first axis, second axis, normal axis) index, as ARC_FEED gives them.
 PLANES = {"CANON_PLANE_XY": (0, 1, 2), "CANON_PLANE_YZ": (1, 2, 0),
@@ -36,6 +37,9 @@ XY = PLANES["CANON_PLANE_XY"]
 Z_UP = NORMALS[XY]
 
 Vec = tuple[float, float, float]
+Cubic = tuple[float, float, float, float]
+Cubics = tuple[Cubic, Cubic, Cubic, Cubic, Cubic, Cubic]  # X Y Z A B C
+AXIS_INDEX = {a: i for i, a in enumerate("XYZABC")}
 
 
 class ArcMove:
@@ -66,6 +70,8 @@ class Consumer(Protocol):
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None: ...
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None: ...
+
+    def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None: ...
 
     def other(self, op: ops.Op, line: int) -> None: ...
 
@@ -112,10 +118,14 @@ class Toolpath:
     # -- the sink protocol --------------------------------------------------------------------
     def emit(self, op: ops.Op, label: str, line: int) -> None:
         handler = self._handlers.get(type(op))
-        if handler is None:
-            self._consumer.other(op, line)
-        else:
+        if handler is not None:
             handler(op, line)
+        elif label == "ENGINE_SEGMENT":
+            self._engine_segment(op, line)
+        else:
+            if label == "SET_POSITION":
+                self._set_position(op)
+            self._consumer.other(op, line)
 
     def emit_move(self, kind: type, fields: Sequence[Any], label: str, line: int) -> None:
         """The interpreter's fast way in for moves (``ops.mover``)."""
@@ -215,6 +225,31 @@ class Toolpath:
         bottom = self.frame.to_machine((op.x, op.y, op.z, p[3], p[4], p[5]))
         self._consumer.tap(self.pos, bottom, line)
 
+    def _engine_segment(self, seg: Any, line: int) -> None:
+        """An engine-dialect segment (:class:`ngc.engine.state.EngineSegment`): each named axis
+        a cubic Bézier in mm over the segment's time; the others hold (U V W are not drawn)."""
+        held = self.pos
+        cubics = [(v, v, v, v) for v in held]
+        for axis, cubic in seg.axes.items():
+            i = AXIS_INDEX.get(axis)
+            if i is not None:
+                cubics[i] = tuple(cubic)
+        end: Pos = tuple(c[3] for c in cubics)  # type: ignore[assignment]
+        self.prog_end = end
+        self._consumer.bezier(tuple(cubics), seg.motion, self.pos, line)  # type: ignore[arg-type]
+        self.pos = self.prog = end
+
+    def _set_position(self, op: Any) -> None:
+        """The engine's G92: the axes named are where the value says, without moving."""
+        value = getattr(op, "value", None)
+        if isinstance(value, dict):
+            pos = list(self.pos)
+            for axis, v in value.items():
+                i = AXIS_INDEX.get(str(axis))
+                if i is not None:
+                    pos[i] = float(v)
+            self.pos = self.prog = self.prog_end = tuple(pos)  # type: ignore[assignment]
+
     # -- state --------------------------------------------------------------------------------
     def _reframed(self, op: ops.Op, line: int) -> None:
         """The frame changed: the machine stays where it is, its program coordinates follow."""
@@ -288,6 +323,10 @@ class Tee:
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
         for r in self.readers:
             r.tap(start, bottom, line)
+
+    def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
+        for r in self.readers:
+            r.bezier(cubics, motion, start, line)
 
     def other(self, op: ops.Op, line: int) -> None:
         for r in self.readers:
