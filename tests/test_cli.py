@@ -12,9 +12,11 @@ from pathlib import Path
 import pytest
 
 from cli_helpers import run
-from ngc import cli, report, rs274
+from ngc import cli
 from ngc.canon import ops
 from ngc.canon.jsonl import ListSink
+from ngc.commands import check as report
+from ngc.commands import rs274
 from ngc.errors import NgcSemanticError
 from ngc.interp.interpreter import Interpreter
 

@@ -16,9 +16,10 @@ import pytest
 
 import ngc
 from cli_helpers import run
-from ngc import options, rs274
+from ngc import options
 from ngc.canon import ops
 from ngc.canon.jsonl import JsonSink, dumps, text_of
+from ngc.commands import rs274
 from ngc.errors import NgcConfigError
 
 SRC = Path(__file__).resolve().parent.parent / "src"
@@ -355,7 +356,7 @@ def test_json_text_escapes() -> None:
 
 
 def test_check_json_of_an_infinite_summary() -> None:
-    from ngc import report
+    from ngc.commands import check as report
 
     summary = report.Summary("mm", 1, 0, 0, float("inf"), 0.0,
                              report.Extents((float("inf"), 0.0, 0.0), (float("inf"), 0.0, 0.0)),
@@ -574,7 +575,7 @@ def test_help_lists_the_public_api_only() -> None:
 
 
 def test_lazy_names_are_real() -> None:
-    from ngc import report
+    from ngc.commands import check as report
 
     assert ngc.check_file is report.check_file
     assert ngc.Summary is report.Summary

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from ngc import rs274
+from ngc.commands import rs274
 from ngc.config import ini as ini_module
 from ngc.config.ini import (
     AMBIGUOUS_CR_ERROR,

@@ -1,4 +1,4 @@
-"""SIN, COS and TAN of degrees (``ngc.degrees``): the doctests, the reduction written out against
+"""SIN, COS and TAN of degrees (``ngc.numeric.degrees``): the doctests, the reduction written out against
 the helpers it was made of, and the kept reduction of :class:`Trig`, which answers as a fresh
 computation does."""
 
@@ -8,8 +8,8 @@ import doctest
 import random
 import struct
 
-from ngc import degrees
-from ngc.degrees import Trig, cos_degrees, sin_degrees, tan_degrees
+from ngc.numeric import degrees
+from ngc.numeric.degrees import Trig, cos_degrees, sin_degrees, tan_degrees
 
 
 def _bits(*values: float) -> bytes:

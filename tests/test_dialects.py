@@ -20,14 +20,15 @@ import pytest
 import ngc
 import ngc.engine
 from cli_helpers import run
-from ngc import dialects, engine_report
+from ngc import dialects
 from ngc.canon.jsonl import JsonSink, ListSink
 from ngc.canon.ops import StraightFeed
 from ngc.canon.text import TextSink
+from ngc.commands import check_engine as engine_report
+from ngc.commands.check import CheckResult
+from ngc.commands.check_engine import EngineCheckResult, cubic_range
 from ngc.engine import Dwell, EngineSegment
-from ngc.engine_report import EngineCheckResult, cubic_range
 from ngc.errors import NgcConfigError, NgcError
-from ngc.report import CheckResult
 
 SRC = Path(__file__).resolve().parent.parent / "src"
 

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from ngc import rs274
 from ngc.canon.jsonl import ListSink
+from ngc.commands import rs274
 from ngc.errors import NgcRuntimeError, NgcSemanticError
 from ngc.interp.flow import Body
 from ngc.interp.interpreter import Interpreter

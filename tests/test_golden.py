@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from ngc import rs274
+from ngc.commands import rs274
 from transcript import messages, normalize
 
 CASES = Path(__file__).parent / "golden" / "cases"

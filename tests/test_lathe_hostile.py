@@ -13,7 +13,7 @@ from cli_helpers import run, write
 from ngc.errors import NgcSemanticError
 from ngc.interp.lathe.finishing import _crossing
 from ngc.interp.lathe.profile import CW, LINE, Seg
-from ngc.longdouble import long_sum
+from ngc.numeric.longdouble import long_sum
 
 PROGRAMS = {
     # a fillet about its arc's own centre (rs274: "G7X error: Not monotonic")
@@ -119,7 +119,7 @@ def test_check_record_has_null_for_a_length_past_a_doubles_range() -> None:
     import io
     import json
 
-    from ngc import report
+    from ngc.commands import check as report
     from ngc.interp.interpreter import Interpreter
 
     result = report.check_lines(io.StringIO("G0 X[EXP[709]]\nG0 X[0-EXP[709]]\nM2\n"), "far.ngc",

@@ -15,9 +15,9 @@ from pathlib import Path
 
 import pytest
 
-from ngc import rs274
 from ngc.canon import ops
 from ngc.canon.jsonl import ListSink
+from ngc.commands import rs274
 from ngc.errors import NgcRuntimeError
 from ngc.interp.handlers import logfile
 from ngc.interp.interpreter import Interpreter

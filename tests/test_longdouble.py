@@ -6,7 +6,7 @@ import math
 import random
 from fractions import Fraction
 
-from ngc.longdouble import (
+from ngc.numeric.longdouble import (
     HALF_PI_REST,
     PI,
     PI_LONG_DOUBLE,

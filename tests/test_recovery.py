@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from ngc import rs274
+from ngc.commands import rs274
 
 PROGRAM = "g1 x1 f1\ng1 x[1/0]\nm2\n"
 MOVE5 = "N..... STRAIGHT_TRAVERSE(5.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)"

@@ -1,4 +1,4 @@
-"""The motion summary (``ngc.report``): arc geometry in every plane, units and offsets followed
+"""The motion summary (``ngc.commands.check``): arc geometry in every plane, units and offsets followed
 from canon, and the doctests of the public functions."""
 
 from __future__ import annotations
@@ -10,9 +10,9 @@ from pathlib import Path
 import pytest
 
 import ngc
-from ngc import report
 from ngc.canon.jsonl import ListSink
-from ngc.report import Arc, Summary, check_file, summarize
+from ngc.commands import check as report
+from ngc.commands.check import Arc, Summary, check_file, summarize
 
 
 def summary_of(program: str) -> Summary:

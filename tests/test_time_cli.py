@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 
 from cli_helpers import run
-from ngc import time_report
+from ngc.commands import time_report
 from ngc.planner import timing, trajectory
 from ngc.planner.geometry import Line
 from ngc.planner.machine import DEFAULT_MACHINE

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 
-from ngc import rs274
+from ngc.commands import rs274
 from ngc.config import varfile
 from ngc.config.varfile import (
     REQUIRED_PARAMETERS,

@@ -56,11 +56,11 @@ from .errors import NgcError
 from .interp.interpreter import Interpreter
 
 if TYPE_CHECKING:
+    from .commands.check import CheckResult, Summary, check_file, summarize
+    from .commands.check_engine import EngineCheckResult, EngineSummary
     from .config.probe import Probe
     from .engine import Setup as EngineSetup
-    from .engine_report import EngineCheckResult, EngineSummary
     from .program import Program
-    from .report import CheckResult, Summary, check_file, summarize
 
 __version__ = "0.1.0"
 
@@ -136,7 +136,7 @@ class _Package(types.ModuleType):
 
     def __getattr__(self, name: str) -> Any:
         if name in self._LAZY:
-            from . import report
+            from .commands import check as report
 
             return getattr(report, name)
         if name == "Program":
@@ -144,7 +144,7 @@ class _Package(types.ModuleType):
 
             return Program
         if name in self._LAZY_ENGINE:
-            from . import engine_report
+            from .commands import check_engine as engine_report
 
             return getattr(engine_report, name)
         raise AttributeError(f"module 'ngc' has no attribute {name!r}")

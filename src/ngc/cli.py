@@ -13,7 +13,7 @@ Exit codes (one policy for every subcommand, see :func:`main`):
 ==  ==============================================================================
 
 ``ngc rs274`` keeps the exit codes of LinuxCNC's ``rs274``; its arguments go to
-:func:`ngc.rs274.run` untouched.
+:func:`ngc.commands.rs274.run` untouched.
 """
 
 from __future__ import annotations
@@ -27,10 +27,11 @@ import sys
 from collections.abc import Callable
 from typing import TYPE_CHECKING, NamedTuple, TextIO
 
-from . import __version__, dialects, rs274
+from . import __version__, dialects
 from .canon.jsonl import JsonSink, dumps
 from .canon.ops import Sink
 from .canon.text import TextSink
+from .commands import rs274
 from .dialects import ENGINE, LINUXCNC
 from .errors import NgcConfigError, NgcError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
@@ -49,10 +50,10 @@ EXIT_BROKEN_PIPE = 141  # 128 + SIGPIPE, what a C filter killed by SIGPIPE repor
 
 if TYPE_CHECKING:
     from .commands.plot import PlotOptions
+    from .commands.time_report import TrajectoryFile
     from .engine import Setup as EngineSetup
     from .planner.machine import Machine as PlannerMachine
     from .planner.timing import TimeResult
-    from .time_report import TrajectoryFile
 
 SINKS: dict[str, Callable[[TextIO], Sink]] = {"text": TextSink, "json": JsonSink}
 STDIN_NAME = "<stdin>"  # how a program read from standard input (``-``) is named
@@ -492,7 +493,7 @@ def run_check(options: argparse.Namespace) -> int:
     dialect are a usage error).  Exit 2 if a file or a machine input cannot be read, else 1 if a
     program has an error, else 0.
     """
-    from . import report  # loaded on use: ``ngc rs274`` starts without it
+    from .commands import check as report  # loaded on use: ``ngc rs274`` starts without it
 
     conflict = None if options.dialect is None else _inputs_conflict(options, options.dialect)
     if conflict is not None:
@@ -544,7 +545,7 @@ def run_check(options: argparse.Namespace) -> int:
 def _check_engine(program: Program, setup: EngineSetup | None, json_lines: bool,
                   max_iterations: int) -> tuple[NgcError | None, str]:
     """``ngc check`` on an engine-dialect program: its first error and its report."""
-    from . import engine_report
+    from .commands import check_engine as engine_report
 
     assert program.handle is not None
     with program.handle:
@@ -681,7 +682,7 @@ def run_time(options: argparse.Namespace) -> int:
 
 
 def _time_linuxcnc(options: argparse.Namespace, program: Program) -> int:
-    from . import time_report  # loaded on use, as the planner is
+    from .commands import time_report  # loaded on use, as the planner is
     from .planner.config import load_machine
     from .planner.trajectory import TooManyRows
 
@@ -747,7 +748,7 @@ def _time_program(options: argparse.Namespace, program: Program, machine: Planne
 def _print_time(options: argparse.Namespace, name: str, result: TimeResult,
                 machine: PlannerMachine) -> None:
     """``ngc time``'s report on stdout, with the text of the slowest lines if it is at hand."""
-    from . import time_report
+    from .commands import time_report
 
     rows = time_report.slowest(result, options.top)
     sources = time_report.source_lines(options.file, (line for line, _ in rows))

@@ -26,9 +26,9 @@ from .options import MachineOptions, Setup, load_setup, new_interpreter
 from .toolpath.moves import Event, Move, MoveList
 
 if TYPE_CHECKING:
+    from .commands.check import CheckResult
     from .planner.machine import Machine
     from .planner.timing import TimeResult
-    from .report import CheckResult
 
 
 @dataclass(frozen=True)
@@ -95,12 +95,12 @@ class Program:
 
     # -- what it does -----------------------------------------------------------------------------
     def check(self) -> CheckResult:
-        """Run it and sum up its motion: :class:`~ngc.report.CheckResult` (``ok``, ``error``,
+        """Run it and sum up its motion: :class:`~ngc.commands.check.CheckResult` (``ok``, ``error``,
         ``summary``), as ``ngc check``; an engine program gives an ``EngineCheckResult``."""
-        from .report import check_lines
+        from .commands.check import check_lines
 
         if self.dialect != dialects.LINUXCNC:
-            from .engine_report import check_text
+            from .commands.check_engine import check_text
 
             return check_text(self._source_text(), self.name,  # type: ignore[return-value]
                               max_iterations=self.options.max_iterations)

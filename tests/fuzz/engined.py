@@ -33,9 +33,10 @@ from typing import Any
 
 import hostile
 
-from ngc import dialects, engine_report
+from ngc import dialects
 from ngc.canon.jsonl import JsonSink
 from ngc.canon.text import TextSink
+from ngc.commands import check_engine as engine_report
 from ngc.engine import Dwell, EngineSegment, ModeChange, Setup, read_setup
 from ngc.engine.names import NAMES
 from ngc.errors import NgcConfigError, NgcError

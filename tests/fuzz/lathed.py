@@ -31,10 +31,10 @@ import lathe
 import lathejob
 import timed
 
-from ngc import report
 from ngc.canon.jsonl import JsonSink
 from ngc.canon.ops import Sink
 from ngc.canon.text import TextSink
+from ngc.commands import check as report
 from ngc.errors import NgcConfigError, NgcError
 from ngc.interp.interpreter import Interpreter
 from ngc.options import MachineOptions, Setup, load_setup, new_interpreter

@@ -7,7 +7,7 @@
 Each program runs the way tests/golden/regen.py runs rs274: a fresh temporary cwd holding the
 program (and ``table.tbl``, passed as ``-t table.tbl``, when the program carries a tool table),
 stdin /dev/null, ``LC_ALL=C``, a private ``HOME``, ``INI_FILE_NAME`` removed, a timeout.
-ngc runs in the worker process by default (``--ngc inproc``: ``ngc.rs274.run(argv)`` with
+ngc runs in the worker process by default (``--ngc inproc``: ``ngc.commands.rs274.run(argv)`` with
 in-memory streams, chdir'd into the same kind of folder); ``--ngc 'ngc rs274'`` or
 ``--ngc 'python -m ngc rs274'`` runs it as a command instead.  Compared: stdout without the counter
 column, stderr lines other than ``executing``, the exit code.
@@ -143,7 +143,7 @@ def _alarm(signum: int, frame: object) -> None:
 
 def run_inproc(text: str, timeout: float) -> Outcome:
     """``ngc rs274 -g prog.ngc`` in this process; an exception counts as an internal error (70)."""
-    from ngc import rs274
+    from ngc.commands import rs274
 
     out, err = io.StringIO(), io.StringIO()
     old_cwd = os.getcwd()
@@ -289,7 +289,7 @@ def _init_worker(cfg: Config) -> None:
     _CFG = cfg
     if cfg.ngc is None:
         with contextlib.suppress(Exception):
-            import ngc.rs274  # noqa: F401
+            import ngc.commands.rs274  # noqa: F401
 
 
 def check_ngc(cfg: Config) -> str | None:
@@ -297,7 +297,7 @@ def check_ngc(cfg: Config) -> str | None:
     if cfg.ngc is not None:
         return None
     try:
-        import ngc.rs274  # noqa: F401
+        import ngc.commands.rs274  # noqa: F401
     except Exception:
         return traceback.format_exc(limit=1)
     return None

@@ -300,7 +300,7 @@ def check_csv(path: Path) -> int:
 
 def check_report(result: TimeResult, machine: Machine) -> None:
     """The text and JSON reports of ``result`` hold numbers only."""
-    from ngc import time_report
+    from ngc.commands import time_report
 
     text = time_report.render("p.ngc", result, machine)
     if "nan" in text or "inf " in text:

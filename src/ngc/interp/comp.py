@@ -35,7 +35,7 @@ from typing import TYPE_CHECKING, Any, NoReturn, Protocol
 
 from ..canon import ops
 from ..errors import NgcSemanticError
-from ..longdouble import HALF_PI_REST, PI_REST, TWO_PI_REST, long_sum
+from ..numeric.longdouble import HALF_PI_REST, PI_REST, TWO_PI_REST, long_sum
 
 if TYPE_CHECKING:
     from ..canon.ops import Mover, Op, Sink

@@ -14,8 +14,8 @@ import operator
 from collections.abc import Callable
 from typing import Protocol
 
-from .. import degrees
 from ..errors import NgcRuntimeError
+from ..numeric import degrees
 
 
 class ParamContext(Protocol):
@@ -240,7 +240,7 @@ _DEGREE_TRIG = _trig(degrees.sin_degrees, degrees.cos_degrees, degrees.tan_degre
 
 def trig_functions() -> dict[str, Callable[[float], float]]:
     """SIN, COS and TAN as :data:`UNARY` has them, keeping the last angle's reduction
-    (:class:`ngc.degrees.Trig`): the parser gives the functions of one line one such set, so that
+    (:class:`ngc.numeric.degrees.Trig`): the parser gives the functions of one line one such set, so that
     ``X[R * COS[A]] Y[R * SIN[A]]`` reduces A once."""
     trig = degrees.Trig()
     return _trig(trig.sin, trig.cos, trig.tan)

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 from ...canon import ops
 from ...errors import NgcSemanticError
-from ...glibc_hypot import hypot
+from ...numeric.glibc_hypot import hypot
 from .. import comp, frames
 
 if TYPE_CHECKING:
@@ -52,7 +52,7 @@ def polar_end(pos: list[float], w: dict[str, float], absolute: bool) -> list[flo
     """@ distance and ^ angle (degrees) from the XY origin; in G91 both add to the current ones.
 
     As rs274 computes it, to the last bit (its signed zeros show it): the distance of a point is
-    the C library's ``hypot`` (:mod:`ngc.glibc_hypot`), its angle ``atan2`` in radians, the ^
+    the C library's ``hypot`` (:mod:`ngc.numeric.glibc_hypot`), its angle ``atan2`` in radians, the ^
     angle is taken to radians alone.  In G91 an @ moves the point out along its angle first, and
     the ^ then turns that point (its distance and angle taken again)."""
     for letter in "xy":

@@ -14,10 +14,10 @@ import os
 from collections.abc import Iterable, Mapping
 from typing import TextIO
 
-from .canon.jsonl import dumps
-from .interp.source import open_text_program
-from .planner.machine import ANGULAR_AXES, Machine
-from .planner.timing import KINDS, TimeResult
+from ..canon.jsonl import dumps
+from ..interp.source import open_text_program
+from ..planner.machine import ANGULAR_AXES, Machine
+from ..planner.timing import KINDS, TimeResult
 
 JSON_CHUNK = 4096  # lines of by_line written at a time
 DIGITS = 6  # JSON numbers are rounded to the microsecond (and the micrometre)

@@ -19,9 +19,9 @@ import io
 import sys
 from typing import TextIO
 
-from .canon.text import TextSink
-from .errors import NgcError
-from .interp.interpreter import Interpreter
+from ..canon.text import TextSink
+from ..errors import NgcError
+from ..interp.interpreter import Interpreter
 
 CONTINUE, MDI = 0, 1
 

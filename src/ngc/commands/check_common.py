@@ -1,10 +1,10 @@
-"""What ``ngc check``'s reports share between the dialects (:mod:`ngc.report` for LinuxCNC
-programs, :mod:`ngc.engine_report` for engine ones): a file's headline, and an error as a
+"""What ``ngc check``'s reports share between the dialects (:mod:`ngc.commands.check` for LinuxCNC
+programs, :mod:`ngc.commands.check_engine` for engine ones): a file's headline, and an error as a
 JSON-ready record."""
 
 from __future__ import annotations
 
-from .errors import NgcError
+from ..errors import NgcError
 
 
 def headline(path: str, error: NgcError | None) -> str:

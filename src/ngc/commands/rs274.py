@@ -11,7 +11,7 @@ Differences, all on purpose: ``-h``/``--help`` prints :data:`HELP` on stdout (rs
 option), ``--max-iterations N`` bounds the loop iterations and calls of a run, and on a terminal a long run
 shows a progress line on stderr (:mod:`ngc.progress`; never when stderr is not a terminal, so
 the output stays byte-exact).  ``-n 0`` and ``-n 1`` go on after errors as rs274 does
-(:mod:`ngc.recovery`); ``-s`` and interactive mode are parsed but not modelled: ngc always runs
+(:mod:`ngc.commands.recovery`); ``-s`` and interactive mode are parsed but not modelled: ngc always runs
 the program in batch mode.
 """
 
@@ -24,18 +24,18 @@ import sys
 from collections.abc import Iterable
 from typing import TextIO
 
-from .canon import ops
-from .canon.text import TextSink
-from .config.ini import Ini, Rs274ngcSettings
-from .config.tooltable import DEFAULT_TABLE, read_tool_table
-from .config.varfile import read_var_file, write_var_file
-from .dialects import DIALECTS, ENGINE, SETUP_IS_ENGINES, linuxcnc_inputs_refused, of_file
-from .errors import NgcConfigError, NgcError, NgcOpenError
-from .interp.flow import DEFAULT_MAX_ITERATIONS
-from .interp.interpreter import Interpreter
-from .interp.source import BOM, ProgramReader, open_program
-from .options import MachineOptions, Setup, new_interpreter, parse_positive
-from .progress import Progress, descriptor, is_terminal
+from ..canon import ops
+from ..canon.text import TextSink
+from ..config.ini import Ini, Rs274ngcSettings
+from ..config.tooltable import DEFAULT_TABLE, read_tool_table
+from ..config.varfile import read_var_file, write_var_file
+from ..dialects import DIALECTS, ENGINE, SETUP_IS_ENGINES, linuxcnc_inputs_refused, of_file
+from ..errors import NgcConfigError, NgcError, NgcOpenError
+from ..interp.flow import DEFAULT_MAX_ITERATIONS
+from ..interp.interpreter import Interpreter
+from ..interp.source import BOM, ProgramReader, open_program
+from ..options import MachineOptions, Setup, new_interpreter, parse_positive
+from ..progress import Progress, descriptor, is_terminal
 from .recovery import Recovery, report
 
 # What rs274 prints after a bad command line (on stderr, exit 1).
@@ -308,8 +308,8 @@ def _run_engine(o: Rs274Options, out: TextIO, err: TextIO) -> int:
     """An engine-dialect program: its operations as ``ngc canon --dialect engine`` prints them,
     on stdout or into the output file; an error as ``ngc canon`` reports it (exit 1).  The
     program is read as bytes, one character each (latin-1), and written back as such."""
-    from .dialects import interpret_engine
-    from .engine import read_setup
+    from ..dialects import interpret_engine
+    from ..engine import read_setup
 
     try:
         setup = None if o.setup_file is None else read_setup(o.setup_file)

@@ -1,6 +1,6 @@
 """What an engine-dialect program does, summed up from its operations (``ngc check`` on an
 engine program, :func:`ngc.check_file`): segments by motion kind, dwells, time, path length and
-the extents of X Y Z, shaped like the LinuxCNC summary of :mod:`ngc.report`.
+the extents of X Y Z, shaped like the LinuxCNC summary of :mod:`ngc.commands.check`.
 
 A consumer of the engine's operations (:mod:`ngc.engine`), never of its state: an
 ``EngineSegment`` gives, per axis it names, the four Bézier control points of the axis's
@@ -15,7 +15,7 @@ position over the segment's time, in program units, and its duration in seconds.
   derivative).  An axis no segment names has none (its position is not in the operations).
 
 Lengths and extents are in the program's units at its end (``UNITS`` changes are followed, as in
-:mod:`ngc.report`); other operations are counted by nothing.
+:mod:`ngc.commands.check`); other operations are counted by nothing.
 """
 
 from __future__ import annotations
@@ -26,13 +26,13 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from .budget import DEFAULT_MAX_ITERATIONS
+from ..budget import DEFAULT_MAX_ITERATIONS
+from ..errors import NgcError
 from .check_common import error_record, headline
-from .errors import NgcError
 
 if TYPE_CHECKING:
-    from .engine import Op, Setup
-    from .engine.bezier import Cubic
+    from ..engine import Op, Setup
+    from ..engine.bezier import Cubic
 
 MOTIONS = ("rapid", "feed", "arc", "probe", "run")  # the kinds always shown, in this order
 DWELL = "dwell"
@@ -97,7 +97,7 @@ def cubic_range(c: Cubic) -> tuple[float, float]:
     >>> cubic_range((0.0, 1.0, 1.0, 0.0))  # rises to 0.75 at t = 0.5 and comes back
     (0.0, 0.75)
     """
-    from .engine.bezier import point
+    from ..engine.bezier import point
 
     values = [c[0], c[3]]
     values.extend(point(c, t) for t in _turning_points(c))
@@ -134,7 +134,7 @@ class EngineSummarizer:
         self._extents: dict[str, list[float]] = {}  # axis -> [low, high], current units
 
     def add(self, op: Op) -> None:
-        from .engine import Dwell, EngineSegment, ModeChange
+        from ..engine import Dwell, EngineSegment, ModeChange
 
         if isinstance(op, EngineSegment):
             self._segment(op)
@@ -145,8 +145,8 @@ class EngineSummarizer:
             self._change_units(str(op.value))
 
     def _segment(self, op: Op) -> None:
-        from .engine import EngineSegment
-        from .engine.bezier import length
+        from ..engine import EngineSegment
+        from ..engine.bezier import length
 
         assert isinstance(op, EngineSegment)
         kind = op.motion
@@ -201,7 +201,7 @@ def check_text(text: str, name: str, setup: Setup | None = None,
     >>> result.lines, round(result.summary.length, 9), result.error.line
     (3, 3.0, 3)
     """
-    from .dialects import engine_ops
+    from ..dialects import engine_ops
 
     summarizer = EngineSummarizer()
     error: NgcError | None = None
@@ -217,7 +217,7 @@ def check_text(text: str, name: str, setup: Setup | None = None,
 def check_file(path: str | os.PathLike[str], setup: Setup | None = None) -> EngineCheckResult:
     """Run an engine-dialect program file (UTF-8, as :func:`ngc.dialects.read_text` reads it);
     raises ``OSError`` if it cannot be read."""
-    from .dialects import read_text
+    from ..dialects import read_text
 
     name = os.fspath(path)
     with open(name, "rb") as handle:

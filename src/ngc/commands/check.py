@@ -16,18 +16,18 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Literal, overload
 
-from .canon import ops
-from .canon.ops import Op, Sink
+from ..canon import ops
+from ..canon.ops import Op, Sink
+from ..errors import NgcError
+from ..interp.interpreter import Interpreter
+from ..interp.source import ProgramReader, open_text_program
+from ..toolpath.frame import Pos
+from ..toolpath.tracker import RAPID, ArcMove, Cubics, Toolpath
 from .check_common import error_record, headline
-from .errors import NgcError
-from .interp.interpreter import Interpreter
-from .interp.source import ProgramReader, open_text_program
-from .toolpath.frame import Pos
-from .toolpath.tracker import RAPID, ArcMove, Cubics, Toolpath
 
 if TYPE_CHECKING:
-    from .engine import Setup as EngineSetup
-    from .engine_report import EngineCheckResult
+    from ..engine import Setup as EngineSetup
+    from .check_engine import EngineCheckResult
 
 MM_PER_UNIT = {"CANON_UNITS_MM": 1.0, "CANON_UNITS_INCHES": 25.4, "CANON_UNITS_CM": 10.0}
 UNIT_NAMES = {"CANON_UNITS_MM": "mm", "CANON_UNITS_INCHES": "inch", "CANON_UNITS_CM": "cm"}
@@ -177,7 +177,7 @@ class Summarizer:
         """A rigid tap is not counted (it ends where it started)."""
 
     def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
-        """Engine programs are summed by :mod:`ngc.engine_report`."""
+        """Engine programs are summed by :mod:`ngc.commands.check_engine`."""
 
     def other(self, op: Op, line: int) -> None:
         if type(op) is ops.UseLengthUnits:
@@ -310,7 +310,7 @@ class CheckResult:
     lines: int
     summary: Summary
     error: NgcError | None
-    dialect = "linuxcnc"  # (an engine program's is an ngc.engine_report.EngineCheckResult)
+    dialect = "linuxcnc"  # (an engine program's is an ngc.commands.check_engine.EngineCheckResult)
 
     @property
     def ok(self) -> bool:
@@ -370,14 +370,13 @@ def check_file(path: str | os.PathLike[str], dialect: str | None = None, *,
 def check_file(path: str | os.PathLike[str], dialect: str | None = None, *,
                setup: EngineSetup | None = None) -> CheckResult | EngineCheckResult:
     """Run a program file through an interpreter that writes no file, keeping only a summary of
-    its motion (see :func:`ngc.report.check_lines`).  The file is read as UTF-8 (a byte that is not UTF-8
-    is kept as a lone surrogate, see :mod:`ngc.canon.jsonl`); a leading byte-order mark is
-    skipped.
+    its motion (see :func:`check_lines`).  The file is read as UTF-8 (a byte that is not UTF-8 is
+    kept as a lone surrogate, see :mod:`ngc.canon.jsonl`); a leading byte-order mark is skipped.
 
     ``dialect`` is ``"linuxcnc"`` or ``"engine"``; None: the one the program's first line names
     (:mod:`ngc.dialects`), else ``"linuxcnc"``.  An engine program gives an
-    :class:`ngc.engine_report.EngineCheckResult` (the same ``path``, ``lines``, ``error`` and
-    ``ok``, and an :class:`~ngc.engine_report.EngineSummary`), run on the machine ``setup``
+    :class:`ngc.commands.check_engine.EngineCheckResult` (the same ``path``, ``lines``, ``error`` and
+    ``ok``, and an :class:`~ngc.commands.check_engine.EngineSummary`), run on the machine ``setup``
     describes (:func:`ngc.engine.read_setup`; None: the default machine).  An unknown dialect,
     or a ``setup`` for a LinuxCNC program, is a ``ValueError``.
 
@@ -399,12 +398,12 @@ def check_file(path: str | os.PathLike[str], dialect: str | None = None, *,
     >>> result.dialect, result.summary.segments["feed"], result.summary.time
     ('engine', 1, 0.5)
     """
-    from . import dialects
+    from .. import dialects
 
     name = os.fspath(path)
     chosen = dialects.checked(dialect) or dialects.of_file(name)
     if chosen == dialects.ENGINE:
-        from . import engine_report
+        from . import check_engine as engine_report
 
         return engine_report.check_file(name, setup)
     if setup is not None:
