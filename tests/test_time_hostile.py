@@ -13,7 +13,6 @@ from pathlib import Path
 import pytest
 
 from cli_helpers import run, write
-from ngc import cli
 from ngc.errors import NgcError
 from ngc.planner.geometry import blend_arc
 from ngc.planner.lookahead import MAX_SECONDS
@@ -111,7 +110,9 @@ def test_the_trajectory_is_named_after_the_report(capsys: pytest.CaptureFixture[
     def fail(*args: object) -> None:
         raise NgcError("the report failed")
 
-    monkeypatch.setattr(cli, "_print_time", fail)
+    from ngc.commands import time_run
+
+    monkeypatch.setattr(time_run, "_print_time", fail)
     code, _, _ = run(capsys, "time", "--trajectory", str(tmp_path / "t.csv"), path)
     assert code == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == ["p.ngc"]

@@ -20,43 +20,29 @@ from __future__ import annotations
 
 import argparse
 import gc
+import importlib
 import io
 import math
 import os
 import sys
 from collections.abc import Callable
-from typing import TYPE_CHECKING, NamedTuple, TextIO
+from typing import TYPE_CHECKING
 
 from . import __version__, dialects
-from .canon.jsonl import JsonSink, dumps
-from .canon.ops import Sink
-from .canon.text import TextSink
 from .commands import rs274
-from .dialects import ENGINE, LINUXCNC
-from .errors import NgcConfigError, NgcError
+from .commands.common import EXIT_OK, EXIT_PROGRAM_ERROR, EXIT_USAGE  # noqa: F401 (the policy)
+from .errors import NgcError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
-from .interp.interpreter import Interpreter
-from .interp.source import text_reader
-from .options import MachineOptions, Setup, load_setup, new_interpreter, parse_positive
-from .progress import Progress, descriptor, is_terminal
+from .options import parse_positive
 from .termination import Terminated, signals_raise
 
-EXIT_OK = 0
-EXIT_PROGRAM_ERROR = 1
-EXIT_USAGE = 2
 EXIT_INTERNAL = 70  # EX_SOFTWARE (sysexits.h)
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, what shells report for Ctrl-C
 EXIT_BROKEN_PIPE = 141  # 128 + SIGPIPE, what a C filter killed by SIGPIPE reports
 
 if TYPE_CHECKING:
-    from .commands.plot import PlotOptions
-    from .commands.time_report import TrajectoryFile
-    from .engine import Setup as EngineSetup
-    from .planner.machine import Machine as PlannerMachine
-    from .planner.timing import TimeResult
+    pass
 
-SINKS: dict[str, Callable[[TextIO], Sink]] = {"text": TextSink, "json": JsonSink}
-STDIN_NAME = "<stdin>"  # how a program read from standard input (``-``) is named
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -112,7 +98,9 @@ def dispatch(args: list[str]) -> int:
     if options.command is None:
         parser.print_help(sys.stderr)
         return EXIT_USAGE
-    command: Callable[[argparse.Namespace], int] = options.run
+    # (each command's module is loaded when it runs: ``ngc rs274`` starts without the others)
+    module = importlib.import_module(f".commands.{RUNNERS[options.command]}", __package__)
+    command: Callable[[argparse.Namespace], int] = module.run
     return command(options)
 
 
@@ -123,6 +111,10 @@ def _write_bytes_as_read() -> None:
     for stream in (sys.stdout, sys.stderr):
         if isinstance(stream, io.TextIOWrapper):
             stream.reconfigure(encoding="utf-8", errors="surrogateescape")
+
+
+# the module that runs each command (``ngc.commands``), by its name
+RUNNERS = {"canon": "canon", "check": "check_run", "time": "time_run", "plot": "plot_run"}
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -149,11 +141,10 @@ def build_parser() -> argparse.ArgumentParser:
     canon.add_argument("file", metavar="FILE", help="the program (- for standard input)")
     canon.add_argument(
         "--format",
-        choices=sorted(SINKS),
+        choices=("json", "text"),
         default="text",
         help="text: rs274's transcript format (default); json: JSON lines",
     )
-    canon.set_defaults(run=run_canon)
     check = sub.add_parser(
         "check", parents=machine, help="validate programs and summarize their motion",
         description="Run programs through the interpreter, writing nothing to disk: per file, "
@@ -168,7 +159,6 @@ def build_parser() -> argparse.ArgumentParser:
         default="text",
         help="text: a paragraph per file (default); json: one JSON object per file and line",
     )
-    check.set_defaults(run=run_check)
     _add_time(sub, [_machine_options()])
     _add_plot(sub, [_machine_options(), _dialect_options()])
     return parser
@@ -204,7 +194,6 @@ def _add_plot(sub: argparse._SubParsersAction[argparse.ArgumentParser],
                       "time on the drawing")
     plot.add_argument("--machine", metavar="TOML", dest="machine_file",
                       help="with --time: ngc's TOML machine file, over the default machine")
-    plot.set_defaults(run=run_plot)
 
 
 VIEW_NAMES = ("top", "front", "side", "iso", "lathe")
@@ -249,7 +238,6 @@ def _add_time(sub: argparse._SubParsersAction[argparse.ArgumentParser],
                       "more stops with an error and leaves no file (default 10000000)")
     time.add_argument("--top", metavar="N", type=_count, default=10,
                       help="how many of the slowest lines to list (default 10)")
-    time.set_defaults(run=run_time)
 
 
 PROGRAM_HELP = (
@@ -322,438 +310,3 @@ def _count(text: str) -> int:
     return int(text)
 
 
-def _setup(command: str, options: argparse.Namespace) -> tuple[MachineOptions, Setup]:
-    """The machine inputs of the command line, loaded; raises :class:`NgcConfigError`.  What
-    rs274 would report about the INI file's settings is printed as a warning."""
-    machine = MachineOptions(ini_file=options.ini_file, tool_table=options.tool_table,
-                             var_file=options.var_file, max_iterations=options.max_iterations,
-                             probe_file=options.probe_file)
-    setup = load_setup(machine)
-    for message in setup.settings.messages:
-        sys.stderr.write(f"ngc {command}: warning: {message}\n")
-    return machine, setup
-
-
-def _open_binary(path: str) -> io.BufferedReader:
-    """A program file (``-``: standard input) as bytes.  Raises ``OSError``."""
-    if path == "-":
-        return open(sys.stdin.fileno(), "rb", closefd=False)
-    return open(path, "rb")
-
-
-class Program(NamedTuple):
-    """A program file, opened, and its dialect: the one given, else its first line's (see
-    :mod:`ngc.dialects`); ``handle`` reads it from its start, ``error`` says why it could not be
-    opened (it is reported after the machine inputs are loaded, as before dialects)."""
-
-    name: str
-    dialect: str
-    handle: io.BufferedReader | None
-    error: OSError | None
-
-    def close(self) -> None:
-        if self.handle is not None:
-            self.handle.close()
-
-
-def _open_marked(path: str, given: str | None) -> Program:
-    name = _name(path)
-    try:
-        handle = _open_binary(path)
-    except OSError as exc:
-        return Program(name, given or LINUXCNC, None, exc)
-    if given is not None:
-        return Program(name, given, handle, None)
-    try:
-        dialect, handle = dialects.of_stream(handle)
-    except OSError as exc:
-        handle.close()
-        return Program(name, LINUXCNC, None, exc)
-    return Program(name, dialect, handle, None)
-
-
-def _name(path: str) -> str:
-    """How a program file is named in messages: its bytes as UTF-8 text, like the program's."""
-    return STDIN_NAME if path == "-" else os.fsencode(path).decode("utf-8", "surrogateescape")
-
-
-def _progress(name: str, handle: object, *, output_to_terminal: bool) -> Progress:
-    """The progress line of a program file: on stderr, if it is a terminal and stdout is not
-    (``ngc canon`` on a terminal shows its output instead)."""
-    active = is_terminal(sys.stderr) and not output_to_terminal
-    return Progress(sys.stderr, name, descriptor(handle), active=active)
-
-
-# The LinuxCNC dialect's machine inputs, as options: (attribute, flag).
-LINUXCNC_INPUTS = (("ini_file", "-i"), ("tool_table", "-t"), ("var_file", "-v"),
-                   ("probe_file", "--probe"))
-
-
-def _inputs_conflict(options: argparse.Namespace, dialect: str) -> str | None:
-    """Why the machine inputs given do not fit a program of ``dialect``, or None."""
-    if dialect == ENGINE:
-        given = [flag for attribute, flag in LINUXCNC_INPUTS
-                 if getattr(options, attribute) is not None]
-        if given:
-            return dialects.linuxcnc_inputs_refused(given)
-    elif options.setup_file is not None:
-        return dialects.SETUP_IS_ENGINES
-    return None
-
-
-def _engine_setup(options: argparse.Namespace) -> EngineSetup | None:
-    """The engine's setup sheet (``--setup``), read; raises :class:`NgcConfigError`."""
-    if options.setup_file is None:
-        return None
-    from .engine import read_setup
-
-    return read_setup(options.setup_file)
-
-
-def run_canon(options: argparse.Namespace) -> int:
-    """``ngc canon FILE``: interpreter start-up and program, streamed to stdout; or, in the
-    engine dialect, the engine's operations."""
-    program = _open_marked(options.file, options.dialect)
-    try:
-        conflict = _inputs_conflict(options, program.dialect)
-        if conflict is not None:
-            sys.stderr.write(f"ngc canon: {conflict}\n")
-            return EXIT_USAGE
-        if program.dialect == ENGINE:
-            return _canon_engine(options, program)
-        return _canon_linuxcnc(options, program)
-    finally:
-        program.close()
-
-
-def _canon_engine(options: argparse.Namespace, program: Program) -> int:
-    try:
-        setup = _engine_setup(options)
-    except NgcConfigError as exc:
-        sys.stderr.write(f"ngc canon: {exc.message}\n")
-        return EXIT_USAGE
-    if program.handle is None:
-        return _cannot_open("canon", program)
-    text = dialects.read_text(program.handle)
-    try:
-        dialects.interpret_engine(text, SINKS[options.format](sys.stdout), setup=setup,
-                                  file=program.name, max_iterations=options.max_iterations)
-    except NgcError as exc:
-        sys.stdout.flush()
-        sys.stderr.write(exc.render() + "\n")
-        return EXIT_PROGRAM_ERROR
-    sys.stdout.flush()
-    return EXIT_OK
-
-
-def _cannot_open(command: str, program: Program) -> int:
-    reason = program.error.strerror if program.error is not None else None
-    sys.stderr.write(f"ngc {command}: cannot open {program.name}: {reason}\n")
-    return EXIT_USAGE
-
-
-def _canon_linuxcnc(options: argparse.Namespace, program: Program) -> int:
-    try:
-        machine, setup = _setup("canon", options)
-    except NgcConfigError as exc:
-        sys.stderr.write(f"ngc canon: {exc.message}\n")
-        return EXIT_USAGE
-    if program.handle is None:
-        return _cannot_open("canon", program)
-    name = program.name
-    handle = text_reader(program.handle)
-    sink = SINKS[options.format](sys.stdout)
-    interp = new_interpreter(sink, machine, setup)
-    with handle, _progress(name, handle, output_to_terminal=is_terminal(sys.stdout)) as progress:
-        try:
-            interp.startup()
-            interp.run(progress.lines(handle), file=name, reader=handle)
-        except NgcError as exc:
-            _flush(sink)
-            progress.close()
-            sys.stderr.write(exc.render() + "\n")
-            return EXIT_PROGRAM_ERROR
-    _flush(sink)
-    return EXIT_OK
-
-
-def _flush(sink: Sink) -> None:
-    """Write what the sink holds back, then stdout, so that the operations before an error come
-    out before the error."""
-    sink.flush()
-    sys.stdout.flush()
-
-
-def run_check(options: argparse.Namespace) -> int:
-    """``ngc check FILE...``: per file, the error (if any) on stderr and a summary (a paragraph,
-    or a JSON object on one line) on stdout.  Nothing is written to disk.
-
-    Each file is in the dialect ``--dialect`` gives, else in the one its first line names; the
-    machine inputs of each dialect apply to its files (with ``--dialect``, those of the other
-    dialect are a usage error).  Exit 2 if a file or a machine input cannot be read, else 1 if a
-    program has an error, else 0.
-    """
-    from .commands import check as report  # loaded on use: ``ngc rs274`` starts without it
-
-    conflict = None if options.dialect is None else _inputs_conflict(options, options.dialect)
-    if conflict is not None:
-        sys.stderr.write(f"ngc check: {conflict}\n")
-        return EXIT_USAGE
-    try:
-        machine, setup = _setup("check", options) if options.dialect != ENGINE else (None, None)
-        engine_setup = _engine_setup(options)
-    except NgcConfigError as exc:
-        sys.stderr.write(f"ngc check: {exc.message}\n")
-        return EXIT_USAGE
-
-    def quiet(sink: Sink) -> Interpreter:
-        assert machine is not None and setup is not None
-        return new_interpreter(sink, machine, setup, write_files=False)
-
-    json_lines = options.format == "json"
-    code = EXIT_OK
-    for i, path in enumerate(options.files):
-        if i and not json_lines:
-            sys.stdout.write("\n")
-        program = _open_marked(path, options.dialect)
-        if program.handle is None:
-            assert program.error is not None
-            _cannot_open("check", program)
-            if json_lines:
-                sys.stdout.write(dumps(_unreadable(program.name, program.error)) + "\n")
-            code = EXIT_USAGE
-            continue
-        if program.dialect == ENGINE:
-            error, paragraph = _check_engine(program, engine_setup, json_lines,
-                                             options.max_iterations)
-        else:
-            handle = text_reader(program.handle)
-            with handle, _progress(program.name, handle, output_to_terminal=False) as progress:
-                result = report.check_lines(progress.lines(handle), program.name, quiet,
-                                            reader=handle)
-            error = result.error
-            paragraph = dumps(report.record(result)) if json_lines else report.render(result)
-        if error is not None:
-            sys.stderr.write(error.render() + "\n")
-            if code == EXIT_OK:
-                code = EXIT_PROGRAM_ERROR
-        sys.stdout.write(paragraph + "\n")
-        sys.stdout.flush()
-    return code
-
-
-def _check_engine(program: Program, setup: EngineSetup | None, json_lines: bool,
-                  max_iterations: int) -> tuple[NgcError | None, str]:
-    """``ngc check`` on an engine-dialect program: its first error and its report."""
-    from .commands import check_engine as engine_report
-
-    assert program.handle is not None
-    with program.handle:
-        text = dialects.read_text(program.handle)
-    result = engine_report.check_text(text, program.name, setup, max_iterations)
-    return result.error, (dumps(engine_report.record(result)) if json_lines
-                          else engine_report.render(result))
-
-
-def _unreadable(name: str, exc: OSError) -> dict[str, object]:
-    """``ngc check --format json``'s object for a file that cannot be opened."""
-    error = {"message": f"cannot open: {exc.strerror}", "file": name, "line": None,
-             "column": None, "source": None}
-    return {"file": name, "ok": False, "lines": None, "error": error, "summary": None}
-
-
-NOT_LINUXCNC = "ngc time runs LinuxCNC programs; {name} is in the engine dialect"
-
-
-def run_plot(options: argparse.Namespace) -> int:
-    """``ngc plot FILE -o OUT``: the toolpath drawn to OUT (.svg or .png).  Exit 2 for a bad
-    command line or machine input, a file that cannot be read or written, ``--time`` with an
-    engine-dialect program or a missing PNG renderer; 1 when the program stopped on an error
-    (the picture is written all the same, the error also on stderr)."""
-    from .commands import plot
-
-    try:
-        plot.output_format(options.output)
-    except ValueError as exc:
-        sys.stderr.write(f"ngc plot: {exc}\n")
-        return EXIT_USAGE
-    program = _open_marked(options.file, options.dialect)
-    try:
-        conflict = _inputs_conflict(options, program.dialect)
-        if conflict is not None:
-            sys.stderr.write(f"ngc plot: {conflict}\n")
-            return EXIT_USAGE
-        if program.dialect == ENGINE:
-            return _plot_engine(options, program)
-        try:
-            inputs, setup = _setup("plot", options)
-            machine = None
-            if options.time:
-                from .planner.config import load_machine
-
-                machine = load_machine(setup.ini, options.machine_file)
-        except NgcConfigError as exc:
-            sys.stderr.write(f"ngc plot: {exc.message}\n")
-            return EXIT_USAGE
-        if program.handle is None:
-            return _cannot_open("plot", program)
-        view = (plot.auto_view_of_file(options.file) if options.view == "auto"
-                else options.view)
-        how = _plot_options(options, view)
-        handle = text_reader(program.handle)
-        try:
-            with handle, _progress(program.name, handle, output_to_terminal=False) as progress:
-                result = plot.draw(progress.lines(handle), program.name, options.output,
-                                   lambda sink: new_interpreter(sink, inputs, setup,
-                                                                write_files=False),
-                                   how, reader=handle, machine=machine)
-        except NgcConfigError as exc:
-            sys.stderr.write(f"ngc plot: {exc.message}\n")
-            return EXIT_USAGE
-        except OSError as exc:
-            sys.stderr.write(f"ngc plot: cannot write {_name(options.output)}: "
-                             f"{exc.strerror}\n")
-            return EXIT_USAGE
-    finally:
-        program.close()
-    if result.error is not None:
-        sys.stderr.write(result.error.render() + "\n")
-        return EXIT_PROGRAM_ERROR
-    return EXIT_OK
-
-
-def _plot_options(options: argparse.Namespace, view: str) -> PlotOptions:
-    from .commands.plot import PlotOptions
-
-    return PlotOptions(view=view, color=options.color, width=options.size[0],
-                       height=options.size[1], dpi=options.dpi, approach=options.approach)
-
-
-def _plot_engine(options: argparse.Namespace, program: Program) -> int:
-    """An engine-dialect program drawn from its segments (``--time`` is ngc time's: refused)."""
-    from .commands import plot
-
-    if options.time:
-        sys.stderr.write(f"ngc plot: --time needs a LinuxCNC program; {program.name} is in the "
-                         "engine dialect (ngc check prints its time)\n")
-        return EXIT_USAGE
-    try:
-        setup = _engine_setup(options)
-    except NgcConfigError as exc:
-        sys.stderr.write(f"ngc plot: {exc.message}\n")
-        return EXIT_USAGE
-    if program.handle is None:
-        return _cannot_open("plot", program)
-    text = dialects.read_text(program.handle)
-    view = "top" if options.view == "auto" else options.view
-    try:
-        result = plot.draw_engine(text, program.name, options.output,
-                                  _plot_options(options, view), setup=setup,
-                                  max_iterations=options.max_iterations)
-    except NgcConfigError as exc:
-        sys.stderr.write(f"ngc plot: {exc.message}\n")
-        return EXIT_USAGE
-    except OSError as exc:
-        sys.stderr.write(f"ngc plot: cannot write {_name(options.output)}: {exc.strerror}\n")
-        return EXIT_USAGE
-    if result.error is not None:
-        sys.stderr.write(result.error.render() + "\n")
-        return EXIT_PROGRAM_ERROR
-    return EXIT_OK
-
-
-def run_time(options: argparse.Namespace) -> int:
-    """``ngc time FILE``: the program's cycle time on the machine, as a paragraph or a JSON
-    object on stdout, and with ``--trajectory`` the sampled motion in a CSV file.  Exit 2 for a
-    bad machine input, a file that cannot be read or written, or an engine-dialect program; 1
-    for a program error (nothing is printed on stdout then)."""
-    for name, value in (("--every", options.every), ("--max-rows", options.max_rows)):
-        if value is not None and options.trajectory is None:
-            sys.stderr.write(f"ngc time: {name} needs --trajectory\n")
-            return EXIT_USAGE
-    program = _open_marked(options.file, options.dialect)
-    try:
-        if program.dialect == ENGINE:
-            sys.stderr.write(f"ngc time: {NOT_LINUXCNC.format(name=program.name)}\n")
-            return EXIT_USAGE
-        return _time_linuxcnc(options, program)
-    finally:
-        program.close()
-
-
-def _time_linuxcnc(options: argparse.Namespace, program: Program) -> int:
-    from .commands import time_report  # loaded on use, as the planner is
-    from .planner.config import load_machine
-    from .planner.trajectory import TooManyRows
-
-    try:
-        inputs, setup = _setup("time", options)
-        machine = load_machine(setup.ini, options.machine_file)
-    except NgcConfigError as exc:
-        sys.stderr.write(f"ngc time: {exc.message}\n")
-        return EXIT_USAGE
-    if program.handle is None:
-        return _cannot_open("time", program)
-    try:
-        csv = None if options.trajectory is None else time_report.TrajectoryFile(options.trajectory)
-    except OSError as exc:
-        sys.stderr.write(f"ngc time: cannot write {_name(options.trajectory)}: {exc.strerror}\n")
-        return EXIT_USAGE
-    try:
-        result = _time_program(options, program, machine,
-                               lambda sink: new_interpreter(sink, inputs, setup, write_files=False),
-                               csv)
-        _print_time(options, program.name, result, machine)
-        if csv is not None:
-            csv.commit()  # the trajectory takes its name once everything else has gone well
-    except NgcError as exc:
-        sys.stderr.write(exc.render() + "\n")
-        return EXIT_PROGRAM_ERROR
-    except (time_report.TrajectoryWriteError, TooManyRows) as exc:
-        sys.stderr.write(f"ngc time: {exc}\n")
-        return EXIT_USAGE
-    finally:
-        if csv is not None:
-            csv.discard()  # after commit: nothing left to do
-    return EXIT_OK
-
-
-def _time_program(options: argparse.Namespace, program: Program, machine: PlannerMachine,
-                  interpreter: Callable[[Sink], Interpreter],
-                  csv: TrajectoryFile | None) -> TimeResult:
-    """Run the program through the planner, with the progress line; the trajectory, if asked
-    for, is written to ``csv`` (not committed).  Raises :class:`NgcError` on a program error."""
-    from .planner.timing import time_lines
-
-    writer = None
-    if csv is not None:
-        from .planner.trajectory import (  # loaded only for --trajectory
-            DEFAULT_MAX_ROWS,
-            TrajectoryWriter,
-        )
-
-        every = machine.servo_period if options.every is None else options.every
-        writer = TrajectoryWriter(csv, machine, every, options.max_rows or DEFAULT_MAX_ROWS)
-    assert program.handle is not None
-    handle = text_reader(program.handle)
-    with handle, _progress(program.name, handle, output_to_terminal=False) as progress:
-        result = time_lines(progress.lines(handle), machine, interpreter, file=program.name,
-                            reader=handle, on_segment=None if writer is None else writer.segment,
-                            on_wait=None if writer is None else writer.wait)
-    if writer is not None:
-        writer.finish(result.total_s)
-    return result
-
-
-def _print_time(options: argparse.Namespace, name: str, result: TimeResult,
-                machine: PlannerMachine) -> None:
-    """``ngc time``'s report on stdout, with the text of the slowest lines if it is at hand."""
-    from .commands import time_report
-
-    rows = time_report.slowest(result, options.top)
-    sources = time_report.source_lines(options.file, (line for line, _ in rows))
-    if options.format == "json":
-        time_report.write_json(sys.stdout, name, result, machine, options.top, sources)
-    else:
-        report = time_report.render(name, result, machine, options.top, sources)
-        sys.stdout.write(report + "\n")

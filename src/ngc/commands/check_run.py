@@ -1,0 +1,109 @@
+"""``ngc check`` on the command line: its options read, the library called, its exit code."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import TYPE_CHECKING
+
+from .. import dialects
+from ..canon.jsonl import dumps
+from ..canon.ops import Sink
+from ..dialects import ENGINE
+from ..errors import NgcConfigError, NgcError
+from ..interp.interpreter import Interpreter
+from ..interp.source import text_reader
+from ..options import new_interpreter
+from .common import (
+    EXIT_OK,
+    EXIT_PROGRAM_ERROR,
+    EXIT_USAGE,
+    OpenedProgram,
+    cannot_open,
+    engine_setup,
+    inputs_conflict,
+    load_inputs,
+    open_marked,
+    progress_of,
+)
+
+if TYPE_CHECKING:
+    from ..engine import Setup as EngineSetup
+
+
+def run(options: argparse.Namespace) -> int:
+    """``ngc check FILE...``: per file, the error (if any) on stderr and a summary (a paragraph,
+    or a JSON object on one line) on stdout.  Nothing is written to disk.
+
+    Each file is in the dialect ``--dialect`` gives, else in the one its first line names; the
+    machine inputs of each dialect apply to its files (with ``--dialect``, those of the other
+    dialect are a usage error).  Exit 2 if a file or a machine input cannot be read, else 1 if a
+    program has an error, else 0.
+    """
+    from . import check as report  # loaded on use: ``ngc rs274`` starts without it
+
+    conflict = None if options.dialect is None else inputs_conflict(options, options.dialect)
+    if conflict is not None:
+        sys.stderr.write(f"ngc check: {conflict}\n")
+        return EXIT_USAGE
+    try:
+        machine, setup = load_inputs("check", options) if options.dialect != ENGINE else (None, None)
+        engine = engine_setup(options)
+    except NgcConfigError as exc:
+        sys.stderr.write(f"ngc check: {exc.message}\n")
+        return EXIT_USAGE
+
+    def quiet(sink: Sink) -> Interpreter:
+        assert machine is not None and setup is not None
+        return new_interpreter(sink, machine, setup, write_files=False)
+
+    json_lines = options.format == "json"
+    code = EXIT_OK
+    for i, path in enumerate(options.files):
+        if i and not json_lines:
+            sys.stdout.write("\n")
+        program = open_marked(path, options.dialect)
+        if program.handle is None:
+            assert program.error is not None
+            cannot_open("check", program)
+            if json_lines:
+                sys.stdout.write(dumps(_unreadable(program.name, program.error)) + "\n")
+            code = EXIT_USAGE
+            continue
+        if program.dialect == ENGINE:
+            error, paragraph = _check_engine(program, engine, json_lines,
+                                             options.max_iterations)
+        else:
+            handle = text_reader(program.handle)
+            with handle, progress_of(program.name, handle, output_to_terminal=False) as progress:
+                result = report.check_lines(progress.lines(handle), program.name, quiet,
+                                            reader=handle)
+            error = result.error
+            paragraph = dumps(report.record(result)) if json_lines else report.render(result)
+        if error is not None:
+            sys.stderr.write(error.render() + "\n")
+            if code == EXIT_OK:
+                code = EXIT_PROGRAM_ERROR
+        sys.stdout.write(paragraph + "\n")
+        sys.stdout.flush()
+    return code
+
+
+def _check_engine(program: OpenedProgram, setup: EngineSetup | None, json_lines: bool,
+                  max_iterations: int) -> tuple[NgcError | None, str]:
+    """``ngc check`` on an engine-dialect program: its first error and its report."""
+    from . import check_engine as engine_report
+
+    assert program.handle is not None
+    with program.handle:
+        text = dialects.read_text(program.handle)
+    result = engine_report.check_text(text, program.name, setup, max_iterations)
+    return result.error, (dumps(engine_report.record(result)) if json_lines
+                          else engine_report.render(result))
+
+
+def _unreadable(name: str, exc: OSError) -> dict[str, object]:
+    """``ngc check --format json``'s object for a file that cannot be opened."""
+    error = {"message": f"cannot open: {exc.strerror}", "file": name, "line": None,
+             "column": None, "source": None}
+    return {"file": name, "ok": False, "lines": None, "error": error, "summary": None}

@@ -1,0 +1,133 @@
+"""What the commands share on the command line: exit codes, the machine inputs as options, a
+program file opened with its dialect, the progress line."""
+
+from __future__ import annotations
+
+import argparse
+import io
+import os
+import sys
+from collections.abc import Callable
+from typing import TYPE_CHECKING, NamedTuple, TextIO
+
+from .. import dialects
+from ..canon.jsonl import JsonSink
+from ..canon.ops import Sink
+from ..canon.text import TextSink
+from ..dialects import ENGINE, LINUXCNC
+from ..options import MachineOptions, Setup, load_setup
+from ..progress import Progress, descriptor, is_terminal
+
+if TYPE_CHECKING:
+    from ..engine import Setup as EngineSetup
+
+EXIT_OK = 0
+EXIT_PROGRAM_ERROR = 1
+EXIT_USAGE = 2
+
+SINKS: dict[str, Callable[[TextIO], Sink]] = {"text": TextSink, "json": JsonSink}
+STDIN_NAME = "<stdin>"  # how a program read from standard input (``-``) is named
+
+
+def load_inputs(command: str, options: argparse.Namespace) -> tuple[MachineOptions, Setup]:
+    """The machine inputs of the command line, loaded; raises :class:`NgcConfigError`.  What
+    rs274 would report about the INI file's settings is printed as a warning."""
+    machine = MachineOptions(ini_file=options.ini_file, tool_table=options.tool_table,
+                             var_file=options.var_file, max_iterations=options.max_iterations,
+                             probe_file=options.probe_file)
+    setup = load_setup(machine)
+    for message in setup.settings.messages:
+        sys.stderr.write(f"ngc {command}: warning: {message}\n")
+    return machine, setup
+
+
+def open_binary(path: str) -> io.BufferedReader:
+    """A program file (``-``: standard input) as bytes.  Raises ``OSError``."""
+    if path == "-":
+        return open(sys.stdin.fileno(), "rb", closefd=False)
+    return open(path, "rb")
+
+
+class OpenedProgram(NamedTuple):
+    """A program file, opened, and its dialect: the one given, else its first line's (see
+    :mod:`ngc.dialects`); ``handle`` reads it from its start, ``error`` says why it could not be
+    opened (it is reported after the machine inputs are loaded, as before dialects)."""
+
+    name: str
+    dialect: str
+    handle: io.BufferedReader | None
+    error: OSError | None
+
+    def close(self) -> None:
+        if self.handle is not None:
+            self.handle.close()
+
+
+def open_marked(path: str, given: str | None) -> OpenedProgram:
+    name = display_name(path)
+    try:
+        handle = open_binary(path)
+    except OSError as exc:
+        return OpenedProgram(name, given or LINUXCNC, None, exc)
+    if given is not None:
+        return OpenedProgram(name, given, handle, None)
+    try:
+        dialect, handle = dialects.of_stream(handle)
+    except OSError as exc:
+        handle.close()
+        return OpenedProgram(name, LINUXCNC, None, exc)
+    return OpenedProgram(name, dialect, handle, None)
+
+
+def display_name(path: str) -> str:
+    """How a program file is named in messages: its bytes as UTF-8 text, like the program's."""
+    return STDIN_NAME if path == "-" else os.fsencode(path).decode("utf-8", "surrogateescape")
+
+
+def progress_of(name: str, handle: object, *, output_to_terminal: bool) -> Progress:
+    """The progress line of a program file: on stderr, if it is a terminal and stdout is not
+    (``ngc canon`` on a terminal shows its output instead)."""
+    active = is_terminal(sys.stderr) and not output_to_terminal
+    return Progress(sys.stderr, name, descriptor(handle), active=active)
+
+
+# The LinuxCNC dialect's machine inputs, as options: (attribute, flag).
+LINUXCNC_INPUTS = (("ini_file", "-i"), ("tool_table", "-t"), ("var_file", "-v"),
+                   ("probe_file", "--probe"))
+
+
+def inputs_conflict(options: argparse.Namespace, dialect: str) -> str | None:
+    """Why the machine inputs given do not fit a program of ``dialect``, or None."""
+    if dialect == ENGINE:
+        given = [flag for attribute, flag in LINUXCNC_INPUTS
+                 if getattr(options, attribute) is not None]
+        if given:
+            return dialects.linuxcnc_inputs_refused(given)
+    elif options.setup_file is not None:
+        return dialects.SETUP_IS_ENGINES
+    return None
+
+
+def engine_setup(options: argparse.Namespace) -> EngineSetup | None:
+    """The engine's setup sheet (``--setup``), read; raises :class:`NgcConfigError`."""
+    if options.setup_file is None:
+        return None
+    from ..engine import read_setup
+
+    return read_setup(options.setup_file)
+
+
+def flush_sink(sink: Sink) -> None:
+    """Write what the sink holds back, then stdout, so that the operations before an error come
+    out before the error."""
+    sink.flush()
+    sys.stdout.flush()
+
+
+NOT_LINUXCNC = "ngc time runs LinuxCNC programs; {name} is in the engine dialect"
+
+
+def cannot_open(command: str, program: OpenedProgram) -> int:
+    reason = program.error.strerror if program.error is not None else None
+    sys.stderr.write(f"ngc {command}: cannot open {program.name}: {reason}\n")
+    return EXIT_USAGE
