@@ -32,10 +32,24 @@ def draw(program: Path, out: Path) -> int:
 ENGINE_DOCS = Path(__file__).resolve().parents[2] / "docs" / "engine"
 
 
+# the drawings kept as PNG too, the reference images of the pixel test, at this size
+PNGS = ("arcs-xy", "ccomp-mill", "helix", "lathe-cycles")
+PNG_SIZE = "600x450"
+
+
+def draw_png(program: Path, out: Path) -> int:
+    return subprocess.run([sys.executable, "-m", "ngc", "plot", program.name, *args_of(program),
+                           "--size", PNG_SIZE, "-o", str(out)], cwd=program.parent,
+                          capture_output=True, check=False).returncode
+
+
 def main() -> int:
     for program in sorted([*HERE.glob("*.ngc"), *ENGINE_DOCS.glob("*.ngc")]):
         code = draw(program, program.with_suffix(".svg"))
         print(f"{program.name}: exit {code}")
+    for name in PNGS:
+        program = HERE / f"{name}.ngc"
+        print(f"{name}.png: exit {draw_png(program, program.with_suffix('.png'))}")
     return 0
 
 
