@@ -69,8 +69,10 @@ class Program:
     def _setup(self) -> Setup:
         return load_setup(self.options)
 
-    def _run(self, sink: Sink) -> None:
-        """Run the program into ``sink``; raises :class:`NgcError` where it stops."""
+    def run(self, sink: Sink) -> None:
+        """Run the program into a canon ``sink`` (``ngc canon``'s: ``TextSink(sys.stdout)``,
+        ``JsonSink``, ``ListSink``, or a toolpath reader's ``toolpath``); raises
+        :class:`NgcError` where it stops.  The sink is not flushed."""
         if self.dialect != dialects.LINUXCNC:
             dialects.interpret_engine(self._source_text(), sink, file=self.name,
                                       max_iterations=self.options.max_iterations)
@@ -110,6 +112,11 @@ class Program:
         with open_text_program(self.path) as reader:
             return check_lines(reader, self.name, self._interpreter, reader=reader)
 
+    def summary(self) -> object:
+        """What ``ngc check`` sums up: :class:`~ngc.commands.check.Summary` (counts, lengths,
+        extents), or an engine program's ``EngineSummary``."""
+        return self.check().summary
+
     def _source_text(self) -> str:
         if self.text is not None:
             return self.text
@@ -131,7 +138,7 @@ class Program:
         """Hand each move and event to ``on_move`` as the program runs (memory flat in the
         program's length); raises :class:`NgcError` where the program stops."""
         reader = MoveList(on_move, file=self.name)
-        self._run(reader.toolpath)
+        self.run(reader.toolpath)
 
     def time(self, machine: Machine | None = None) -> TimeResult:
         """The cycle time on ``machine`` (:class:`ngc.planner.machine.Machine`, e.g. from
@@ -144,7 +151,7 @@ class Program:
         if machine is None:
             machine = load_machine(self._setup().ini, None)
         timer = Timer(machine)
-        self._run(timer.sink)
+        self.run(timer.sink)
         return timer.finish()
 
     def plot(self, output: str | None = None, *, view: str = "auto", color: str = "kind",
