@@ -154,21 +154,36 @@ class Summarizer:
         self._include(q)
 
     def arc(self, arc: ArcMove, line: int) -> None:
+        """An arc: its length and its extremes, as :class:`Arc` works them out (written out
+        here, the same operations: this is the hot path of arc-heavy programs)."""
         self._arcs += 1
         first, second, axis = self.toolpath.plane
         op, pos = arc.op, arc.prog_start
-        shape = Arc(
-            start=(pos[first], pos[second], pos[axis]),
-            end=(op.first_end, op.second_end, op.axis_end_point),
-            center=(op.first_axis, op.second_axis),
-            rotation=op.rotation,
-        )
-        for p in shape.extremes():
-            xyz = [0.0, 0.0, 0.0]
-            xyz[first], xyz[second], xyz[axis] = p
+        s1, s2, z0 = pos[first], pos[second], pos[axis]
+        e1, e2, z1 = op.first_end, op.second_end, op.axis_end_point
+        c1, c2, rotation = op.first_axis, op.second_axis, op.rotation
+        r0 = math.hypot(s1 - c1, s2 - c2)
+        r1 = math.hypot(e1 - c1, e2 - c2)
+        a0 = math.atan2(s2 - c2, s1 - c1)
+        a1 = math.atan2(e2 - c2, e1 - c1)
+        delta = (a1 - a0) % TAU if rotation > 0 else (a0 - a1) % TAU
+        if delta == 0.0:
+            delta = TAU
+        sweep = delta + TAU * (max(abs(rotation), 1) - 1)
+        direction = 1.0 if rotation > 0 else -1.0
+        xyz = [0.0, 0.0, 0.0]
+        for theta in QUADRANT_ANGLES:
+            travelled = ((theta - a0) * direction) % TAU
+            if travelled > sweep:
+                continue
+            t = travelled / sweep
+            r = r0 + (r1 - r0) * t
+            xyz[first] = c1 + r * math.cos(theta)
+            xyz[second] = c2 + r * math.sin(theta)
+            xyz[axis] = z0 + (z1 - z0) * t
             self._include(xyz)
         self._include(self.toolpath.prog_end)
-        self._feed_length += shape.length()
+        self._feed_length += math.hypot(sweep * (r0 + r1) / 2.0, z1 - z0)
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
         """A curve is not counted (its end is where the next move starts)."""
