@@ -582,3 +582,18 @@ def test_lazy_names_are_real() -> None:
     assert set(ngc.__all__) <= set(dir(ngc))
     with pytest.raises(AttributeError, match="no attribute 'nothing'"):
         ngc.nothing  # type: ignore[attr-defined]  # noqa: B018
+
+
+@pytest.mark.parametrize(("data", "shown"), [
+    (b"G21\n(\xe9)\nG0 X1 \xe9\nM2\n", b"'\\351'"),  # a byte that is not UTF-8: the byte
+    (b"G21\nG0 X1 \xe2\x80\x94\nM2\n", b"'\\342'"),  # an em dash: its first byte, as rs274 reads it
+])
+def test_a_bad_character_is_shown_as_rs274_shows_its_byte(tmp_path: Path, data: bytes,
+                                                          shown: bytes) -> None:
+    path = tmp_path / "p.ngc"
+    path.write_bytes(data)
+    for command in ("check", "canon"):
+        done = subprocess.run([sys.executable, "-m", "ngc", command, str(path)],
+                              capture_output=True, check=False)
+        assert done.returncode == 1
+        assert b"Bad character " + shown + b" used" in done.stderr

@@ -241,8 +241,13 @@ def _set_number(block: Block, digits: str) -> None:
 
 def _show_char(c: str) -> str:
     """A character as rs274 shows it: control characters and bytes past ``z`` as three octal digits
-    (the program is read as bytes)."""
+    (rs274 reads the program as bytes: a character past ASCII is its first byte in UTF-8, a byte
+    that is not UTF-8 (read as a lone surrogate) the byte itself)."""
     code = ord(c)
+    if 0xDC80 <= code <= 0xDCFF:
+        code -= 0xDC00
+    elif code > 0xFF:
+        code = c.encode("utf-8", "surrogatepass")[0]
     return f"\\{code:03o}" if code < 32 or code > 122 else c
 
 
