@@ -321,3 +321,14 @@ def test_two_interpreters_are_independent() -> None:
     assert units(metric) == ["CANON_UNITS_MM", "CANON_UNITS_MM"]
     assert inch.printed == ["2.500000 -0.250000 0.000000 1.000000 1.000000"]
     assert metric.printed == ["40.000000 -3.000000 1.000000 0.000000 0.000000"]
+
+
+def test_check_names_the_subroutine_file_an_error_is_in(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    (tmp_path / "bad.ngc").write_text("o<bad> sub\nG1 X1 F100\nG2 X0 Y0 R0.1\no<bad> endsub\nM2\n")
+    (tmp_path / "main.ngc").write_text("G21\no<bad> call\nM2\n")
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run(capsys, "check", "main.ngc")
+    assert code == 1
+    assert out.startswith("main.ngc: stopped by an error at line 3 of bad.ngc, 3 lines\n")
+    assert err.startswith("bad.ngc:3:")

@@ -45,6 +45,30 @@ def test_command_runs(doc: str, command: str, tmp_path: Path) -> None:
     assert done.returncode == 0, done.stderr
 
 
+SHOWN = re.compile(r"<!-- output of: (ngc [^>]*?) -->\n```\n(.*?)```", re.S)
+
+
+def _shown_outputs() -> list[tuple[str, str, str]]:
+    return [(doc.relative_to(ROOT).as_posix(), command, text) for doc in DOCS
+            for command, text in SHOWN.findall(doc.read_text())]
+
+
+SHOWN_OUTPUTS = _shown_outputs()
+
+
+def test_docs_show_outputs() -> None:
+    assert SHOWN_OUTPUTS
+
+
+@pytest.mark.parametrize(("doc", "command", "text"), SHOWN_OUTPUTS,
+                         ids=[f"{d}: {c}" for d, c, _ in SHOWN_OUTPUTS])
+def test_shown_output_is_the_commands(doc: str, command: str, text: str) -> None:
+    """A block after ``<!-- output of: ngc ... -->`` is what the command prints now."""
+    done = subprocess.run([sys.executable, "-m", "ngc", *command.split()[1:]], cwd=ROOT,
+                          capture_output=True, text=True, timeout=300)
+    assert done.stdout == text, f"{doc}: the output shown for `{command}` has drifted"
+
+
 PYTHON = re.compile(r"```python\n(.*?)```", re.S)
 
 

@@ -92,3 +92,13 @@ def test_engine_programs() -> None:
     assert p._repr_svg_().startswith("<svg")
     with pytest.raises(ValueError, match="engine dialect"):
         p.time()
+
+
+def test_help_lists_the_whole_public_api() -> None:
+    import pydoc
+
+    text = pydoc.render_doc(ngc, renderer=pydoc.plaintext)
+    for name in ngc.__all__:
+        assert name in text, name
+        assert getattr(ngc, name) is not None
+    assert "time_text" in ngc.__all__ and "Program" in ngc.__all__

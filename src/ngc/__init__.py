@@ -28,6 +28,10 @@ probe=..., dialect=...)``, then ``check()``, ``moves()`` (the toolpath in machin
 :mod:`ngc.toolpath`), ``walk(on_move)`` (the same, streamed), ``time(machine)`` and
 ``plot(output, view=...)``; in Jupyter a program shows as its drawing.
 
+Timing (``ngc time``): :func:`time_text` (a program's text) and :func:`time_file` (a file, with
+the machine inputs) give a :class:`TimeResult` (``total_s``, ``by_kind``, ``by_tool``,
+``by_line``) on a machine (:mod:`ngc.planner.machine`; None: the default).
+
 Checking and summing up motion:
 
 * :func:`check_file` — run a program file (writing no file), returning a :class:`CheckResult`:
@@ -60,6 +64,7 @@ if TYPE_CHECKING:
     from .commands.check_engine import EngineCheckResult, EngineSummary
     from .config.probe import Probe
     from .engine import Setup as EngineSetup
+    from .planner.timing import TimeResult, time_file, time_text
     from .program import Program
 
 __version__ = "0.1.0"
@@ -74,9 +79,12 @@ __all__ = [
     "Program",
     "Sink",
     "Summary",
+    "TimeResult",
     "check_file",
     "interpret",
     "summarize",
+    "time_file",
+    "time_text",
 ]
 
 
@@ -133,6 +141,7 @@ class _Package(types.ModuleType):
 
     _LAZY = frozenset({"CheckResult", "Summary", "check_file", "summarize"})
     _LAZY_ENGINE = frozenset({"EngineCheckResult", "EngineSummary"})
+    _LAZY_TIME = frozenset({"TimeResult", "time_file", "time_text"})
 
     def __getattr__(self, name: str) -> Any:
         if name in self._LAZY:
@@ -143,6 +152,10 @@ class _Package(types.ModuleType):
             from .program import Program
 
             return Program
+        if name in self._LAZY_TIME:
+            from .planner import timing
+
+            return getattr(timing, name)
         if name in self._LAZY_ENGINE:
             from .commands import check_engine as engine_report
 
@@ -150,7 +163,8 @@ class _Package(types.ModuleType):
         raise AttributeError(f"module 'ngc' has no attribute {name!r}")
 
     def __dir__(self) -> list[str]:
-        return sorted({*super().__dir__(), *self._LAZY, *self._LAZY_ENGINE, "Program"})
+        return sorted({*super().__dir__(), *self._LAZY, *self._LAZY_ENGINE, *self._LAZY_TIME,
+                       "Program"})
 
 
 sys.modules[__name__].__class__ = _Package

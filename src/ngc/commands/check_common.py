@@ -13,6 +13,9 @@ def headline(path: str, error: NgcError | None) -> str:
         return f"{path}: ok"
     if error.line is None:
         return f"{path}: error"
+    if error.file is not None and error.file != path:
+        # (in a subroutine file the program called: its line is that file's)
+        return f"{path}: stopped by an error at line {error.line} of {error.file}"
     return f"{path}: stopped by an error at line {error.line}"
 
 

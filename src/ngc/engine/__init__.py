@@ -1,4 +1,5 @@
-"""The engine dialect (``spec/seeds/003``): G-codes by number or by name, motion made of clauses of
+"""The engine dialect (``../shared/spec/seeds/003_4acd6ea7c5d2d9d9.txt``): G-codes by number or
+by name, motion made of clauses of
 axis, vector and polar references, each a constant-speed or cubic-Bézier motion over the move's
 normalised time, interpolated as *engine segments* (per axis, the four control points of a cubic
 Bézier of position over the segment's time, and a duration).
