@@ -20,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-from cli_helpers import run
+from cli_helpers import run, write
 from ngc.commands import time_report
 from ngc.planner import timing, trajectory
 from ngc.planner.geometry import Line
@@ -418,3 +418,18 @@ def test_the_json_by_line_is_whole_at_any_count(lines: int) -> None:
     record = json.loads(out.getvalue())
     assert len(record["by_line"]) == lines
     assert all(value == 0.5 for value in record["by_line"].values())
+
+
+def test_many_files_each_in_turn(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    a = write(tmp_path, "a.ngc", "G1 X10 F600\nM2\n")
+    bad = write(tmp_path, "bad.ngc", "G1 X10 F600\nG2 X0 Y0 R0.1\nM2\n")
+    b = write(tmp_path, "b.ngc", "G1 X20 F600\nM2\n")
+    code, out, err = run(capsys, "time", a, bad, b)
+    assert code == 1
+    assert [p.split(":")[0] for p in out.split("\n\n")] == [a, b]
+    assert "Arc radius too small" in err
+    code, out, _ = run(capsys, "time", "--format", "json", a, b)
+    assert code == 0
+    assert [json.loads(line)["total_s"] for line in out.splitlines()] == [1.02, 2.02]
+    code, _, err = run(capsys, "time", "--trajectory", str(tmp_path / "t.csv"), a, b)
+    assert code == 2 and "--trajectory takes one program" in err

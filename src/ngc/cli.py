@@ -220,7 +220,8 @@ def _add_time(sub: argparse._SubParsersAction[argparse.ArgumentParser],
         "default machine, or -i INI's, with --machine's TOML file over it (docs/machine.md).",
         epilog=PROGRAM_HELP,
     )
-    time.add_argument("file", metavar="FILE", help="the program (- for standard input)")
+    time.add_argument("files", metavar="FILE", nargs="+",
+                      help="programs (- for standard input), each timed in turn")
     time.add_argument("--dialect", choices=dialects.DIALECTS, default=None,
                       help="the program's dialect; ngc time runs LinuxCNC programs only, and "
                       "refuses one in the engine dialect (given here, or by its first line)")

@@ -41,17 +41,34 @@ def run(options: argparse.Namespace) -> int:
         if value is not None and options.trajectory is None:
             sys.stderr.write(f"ngc time: {name} needs --trajectory\n")
             return EXIT_USAGE
-    program = open_marked(options.file, options.dialect)
+    if options.trajectory is not None and len(options.files) > 1:
+        sys.stderr.write("ngc time: --trajectory takes one program\n")
+        return EXIT_USAGE
+    code = EXIT_OK
+    printed = False  # a report went out: the next text report is set apart by a blank line
+    for path in options.files:
+        lead = "\n" if printed and options.format != "json" else ""
+        done = _time_one(options, path, lead)
+        printed |= done == EXIT_OK
+        if done == EXIT_USAGE or (done == EXIT_PROGRAM_ERROR and code == EXIT_OK):
+            code = done
+    return code
+
+
+def _time_one(options: argparse.Namespace, path: str, lead: str) -> int:
+    """One program of ``ngc time FILE...``: its report, or its error; its exit code."""
+    program = open_marked(path, options.dialect)
     try:
         if program.dialect == ENGINE:
             sys.stderr.write(f"ngc time: {NOT_LINUXCNC.format(name=program.name)}\n")
             return EXIT_USAGE
-        return _time_linuxcnc(options, program)
+        return _time_linuxcnc(options, program, path, lead)
     finally:
         program.close()
 
 
-def _time_linuxcnc(options: argparse.Namespace, program: OpenedProgram) -> int:
+def _time_linuxcnc(options: argparse.Namespace, program: OpenedProgram, path: str,
+                   lead: str) -> int:
     from ..planner.config import load_machine
     from ..planner.trajectory import TooManyRows
     from . import time_report  # loaded on use, as the planner is
@@ -73,7 +90,8 @@ def _time_linuxcnc(options: argparse.Namespace, program: OpenedProgram) -> int:
         result = _time_program(options, program, machine,
                                lambda sink: new_interpreter(sink, inputs, setup, write_files=False),
                                csv)
-        _print_time(options, program.name, result, machine)
+        sys.stdout.write(lead)
+        _print_time(options, program.name, result, machine, path)
         if csv is not None:
             csv.commit()  # the trajectory takes its name once everything else has gone well
     except NgcError as exc:
@@ -116,14 +134,15 @@ def _time_program(options: argparse.Namespace, program: OpenedProgram, machine: 
 
 
 def _print_time(options: argparse.Namespace, name: str, result: TimeResult,
-                machine: PlannerMachine) -> None:
+                machine: PlannerMachine, path: str) -> None:
     """``ngc time``'s report on stdout, with the text of the slowest lines if it is at hand."""
     from . import time_report
 
     rows = time_report.slowest(result, options.top)
-    sources = time_report.source_lines(options.file, (line for line, _ in rows))
+    sources = time_report.source_lines(path, (line for line, _ in rows))
     if options.format == "json":
         time_report.write_json(sys.stdout, name, result, machine, options.top, sources)
     else:
         report = time_report.render(name, result, machine, options.top, sources)
         sys.stdout.write(report + "\n")
+    sys.stdout.flush()
