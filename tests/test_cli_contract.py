@@ -597,3 +597,21 @@ def test_a_bad_character_is_shown_as_rs274_shows_its_byte(tmp_path: Path, data: 
                               capture_output=True, check=False)
         assert done.returncode == 1
         assert b"Bad character " + shown + b" used" in done.stderr
+
+
+@pytest.mark.parametrize("command", [["check"], ["check", "--format", "json"], ["time"],
+                                     ["time", "--format", "json"]])
+def test_jobs_give_the_output_of_one_job(tmp_path: Path, command: list[str]) -> None:
+    """``-j 2`` runs files on two processes; stdout, stderr and the exit code are -j 1's."""
+    names = []
+    for i in range(7):
+        text = f"G21 G1 X{i + 1} F600\nM2\n" if i != 3 else "G1 X1 F100\nG2 X0 Y0 R0.1\nM2\n"
+        (tmp_path / f"p{i}.ngc").write_text(text)
+        names.append(f"p{i}.ngc")
+    names.insert(5, "missing.ngc")
+    runs = [subprocess.run([sys.executable, "-m", "ngc", *command, "-j", jobs, *names],
+                           cwd=tmp_path, capture_output=True, check=False)
+            for jobs in ("1", "2")]
+    assert runs[0].returncode == runs[1].returncode == 2
+    assert runs[0].stdout == runs[1].stdout and runs[0].stdout.count(b"p6.ngc") >= 1
+    assert runs[0].stderr == runs[1].stderr

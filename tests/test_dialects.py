@@ -261,8 +261,8 @@ def test_check_gives_each_file_its_dialects_inputs(capsys: pytest.CaptureFixture
     (work / "t.ngc").write_text("T7 M6\nM2\n")
     code, out, err = run(capsys, "check", "t.ngc")
     assert code == 1 and "Requested tool 7 not found in the tool table" in err
-    code, out, err = run(capsys, "check", "-t", "tools.tbl", "--setup", "s.toml", "--format",
-                         "json", "m.ngc", "t.ngc")
+    code, out, err = run(capsys, "check", "-j", "1", "-t", "tools.tbl", "--setup", "s.toml",
+                         "--format", "json", "m.ngc", "t.ngc")
     records = [json.loads(line) for line in out.splitlines()]
     assert (code, err) == (0, "")
     assert [r["ok"] for r in records] == [True, True]

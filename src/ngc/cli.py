@@ -30,7 +30,12 @@ from typing import TYPE_CHECKING
 
 from . import __version__, dialects
 from .commands import rs274
-from .commands.common import EXIT_OK, EXIT_PROGRAM_ERROR, EXIT_USAGE  # noqa: F401 (the policy)
+from .commands.common import (  # noqa: F401 (the exit-code policy)
+    EXIT_OK,
+    EXIT_PROGRAM_ERROR,
+    EXIT_USAGE,
+    default_jobs,
+)
 from .errors import NgcError
 from .interp.flow import DEFAULT_MAX_ITERATIONS
 from .options import parse_positive
@@ -153,6 +158,7 @@ def build_parser() -> argparse.ArgumentParser:
         epilog=PROGRAM_HELP,
     )
     check.add_argument("files", metavar="FILE", nargs="+", help="programs (- for standard input)")
+    _add_jobs(check)
     check.add_argument(
         "--format",
         choices=("json", "text"),
@@ -199,6 +205,12 @@ def _add_plot(sub: argparse._SubParsersAction[argparse.ArgumentParser],
 VIEW_NAMES = ("top", "front", "side", "iso", "lathe")
 
 
+def _add_jobs(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("-j", "--jobs", metavar="N", type=_positive, default=default_jobs(),
+                        help="run N programs at once, on N processes (default: one per core); "
+                        "the output comes in the files' order, as with -j 1")
+
+
 def _size(text: str) -> tuple[int, int]:
     parts = text.lower().split("x")
     try:
@@ -222,6 +234,7 @@ def _add_time(sub: argparse._SubParsersAction[argparse.ArgumentParser],
     )
     time.add_argument("files", metavar="FILE", nargs="+",
                       help="programs (- for standard input), each timed in turn")
+    _add_jobs(time)
     time.add_argument("--dialect", choices=dialects.DIALECTS, default=None,
                       help="the program's dialect; ngc time runs LinuxCNC programs only, and "
                       "refuses one in the engine dialect (given here, or by its first line)")

@@ -13,13 +13,14 @@ from ..dialects import ENGINE
 from ..errors import NgcConfigError, NgcError
 from ..interp.interpreter import Interpreter
 from ..interp.source import text_reader
-from ..options import new_interpreter
+from ..options import MachineOptions, load_setup, new_interpreter
 from .common import (
     EXIT_OK,
     EXIT_PROGRAM_ERROR,
     EXIT_USAGE,
     OpenedProgram,
     cannot_open,
+    each_file,
     engine_setup,
     inputs_conflict,
     load_inputs,
@@ -37,55 +38,59 @@ def run(options: argparse.Namespace) -> int:
 
     Each file is in the dialect ``--dialect`` gives, else in the one its first line names; the
     machine inputs of each dialect apply to its files (with ``--dialect``, those of the other
-    dialect are a usage error).  Exit 2 if a file or a machine input cannot be read, else 1 if a
-    program has an error, else 0.
+    dialect are a usage error).  ``-j N`` checks N files at once, the output in the files'
+    order as with one.  Exit 2 if a file or a machine input cannot be read, else 1 if a program
+    has an error, else 0.
     """
-    from . import check as report  # loaded on use: ``ngc rs274`` starts without it
-
     conflict = None if options.dialect is None else inputs_conflict(options, options.dialect)
     if conflict is not None:
         sys.stderr.write(f"ngc check: {conflict}\n")
         return EXIT_USAGE
-    try:
-        machine, setup = load_inputs("check", options) if options.dialect != ENGINE else (None, None)
-        engine = engine_setup(options)
+    try:  # (read once here, for their messages and warnings; each file reads them again)
+        if options.dialect != ENGINE:
+            load_inputs("check", options)
+        engine_setup(options)
     except NgcConfigError as exc:
         sys.stderr.write(f"ngc check: {exc.message}\n")
         return EXIT_USAGE
+    return each_file(options, _check_file, "" if options.format == "json" else "\n")
 
-    def quiet(sink: Sink) -> Interpreter:
-        assert machine is not None and setup is not None
-        return new_interpreter(sink, machine, setup, write_files=False)
+
+def _check_file(options: argparse.Namespace, path: str) -> int:
+    """``ngc check`` on one file: its paragraph on stdout, its error on stderr; its exit code."""
+    from . import check as report  # loaded on use: ``ngc rs274`` starts without it
 
     json_lines = options.format == "json"
+    program = open_marked(path, options.dialect)
+    if program.handle is None:
+        assert program.error is not None
+        cannot_open("check", program)
+        if json_lines:
+            sys.stdout.write(dumps(_unreadable(program.name, program.error)) + "\n")
+        return EXIT_USAGE
     code = EXIT_OK
-    for i, path in enumerate(options.files):
-        if i and not json_lines:
-            sys.stdout.write("\n")
-        program = open_marked(path, options.dialect)
-        if program.handle is None:
-            assert program.error is not None
-            cannot_open("check", program)
-            if json_lines:
-                sys.stdout.write(dumps(_unreadable(program.name, program.error)) + "\n")
-            code = EXIT_USAGE
-            continue
-        if program.dialect == ENGINE:
-            error, paragraph = _check_engine(program, engine, json_lines,
-                                             options.max_iterations)
-        else:
-            handle = text_reader(program.handle)
-            with handle, progress_of(program.name, handle, output_to_terminal=False) as progress:
-                result = report.check_lines(progress.lines(handle), program.name, quiet,
-                                            reader=handle)
-            error = result.error
-            paragraph = dumps(report.record(result)) if json_lines else report.render(result)
-        if error is not None:
-            sys.stderr.write(error.render() + "\n")
-            if code == EXIT_OK:
-                code = EXIT_PROGRAM_ERROR
-        sys.stdout.write(paragraph + "\n")
-        sys.stdout.flush()
+    if program.dialect == ENGINE:
+        error, paragraph = _check_engine(program, engine_setup(options), json_lines,
+                                         options.max_iterations)
+    else:
+        inputs = MachineOptions(ini_file=options.ini_file, tool_table=options.tool_table,
+                                var_file=options.var_file, max_iterations=options.max_iterations,
+                                probe_file=options.probe_file)
+        setup = load_setup(inputs)
+
+        def quiet(sink: Sink) -> Interpreter:
+            return new_interpreter(sink, inputs, setup, write_files=False)
+
+        handle = text_reader(program.handle)
+        with handle, progress_of(program.name, handle, output_to_terminal=False) as progress:
+            result = report.check_lines(progress.lines(handle), program.name, quiet,
+                                        reader=handle)
+        error = result.error
+        paragraph = dumps(report.record(result)) if json_lines else report.render(result)
+    if error is not None:
+        sys.stderr.write(error.render() + "\n")
+        code = EXIT_PROGRAM_ERROR
+    sys.stdout.write(paragraph + "\n")
     return code
 
 

@@ -131,3 +131,73 @@ def cannot_open(command: str, program: OpenedProgram) -> int:
     reason = program.error.strerror if program.error is not None else None
     sys.stderr.write(f"ngc {command}: cannot open {program.name}: {reason}\n")
     return EXIT_USAGE
+
+
+# -- several programs on several cores (check, time) --------------------------------------------
+Worker = Callable[[argparse.Namespace, str], int]
+
+
+def _run_captured(worker: Worker, options: argparse.Namespace, path: str,
+                  stderr_too: bool) -> tuple[int, str, str]:
+    """``worker(options, path)``'s exit code and what it wrote to stdout (and stderr)."""
+    out, err = io.StringIO(), io.StringIO()
+    real = sys.stdout, sys.stderr
+    sys.stdout = out
+    if stderr_too:
+        sys.stderr = err
+    try:
+        code = worker(options, path)
+    finally:
+        sys.stdout, sys.stderr = real
+    return code, out.getvalue(), err.getvalue()
+
+
+def _in_worker(job: tuple[Worker, argparse.Namespace, str]) -> tuple[int, str, str]:
+    worker, options, path = job
+    return _run_captured(worker, options, path, stderr_too=True)
+
+
+def each_file(options: argparse.Namespace, worker: Worker, separator: str) -> int:
+    """Run ``worker(options, path)`` for each of ``options.files`` on ``options.jobs`` worker
+    processes (one job, or one file: in this process), writing what each wrote in the files'
+    order, the same as with one job; ``separator`` goes between the outputs of two files that
+    wrote any (a blank line between paragraphs).  Returns the exit code of the worst: 2 (a file
+    or an input that cannot be read), else 1 (a program error), else 0."""
+    paths = list(options.files)
+    jobs = min(getattr(options, "jobs", 1) or 1, len(paths))
+    worst = EXIT_OK
+    wrote = False
+
+    def show(code: int, out: str, err: str) -> None:
+        nonlocal worst, wrote
+        if out:
+            if wrote:
+                sys.stdout.write(separator)
+            sys.stdout.write(out)
+            sys.stdout.flush()
+            wrote = True
+        if err:
+            sys.stderr.write(err)
+            sys.stderr.flush()
+        worst = EXIT_USAGE if EXIT_USAGE in (worst, code) else max(worst, code)
+
+    if jobs <= 1:
+        for path in paths:
+            show(*_run_captured(worker, options, path, stderr_too=False))
+        return worst
+    import concurrent.futures
+    import multiprocessing
+
+    with concurrent.futures.ProcessPoolExecutor(
+            jobs, mp_context=multiprocessing.get_context("fork")) as pool:
+        for result in pool.map(_in_worker, [(worker, options, p) for p in paths]):
+            show(*result)
+    return worst
+
+
+def default_jobs() -> int:
+    """The worker processes ``-j`` gives by default: one per core this process may use."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):
+        return max(1, os.cpu_count() or 1)

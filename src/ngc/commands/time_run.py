@@ -21,6 +21,7 @@ from .common import (
     OpenedProgram,
     cannot_open,
     display_name,
+    each_file,
     load_inputs,
     open_marked,
     progress_of,
@@ -44,31 +45,22 @@ def run(options: argparse.Namespace) -> int:
     if options.trajectory is not None and len(options.files) > 1:
         sys.stderr.write("ngc time: --trajectory takes one program\n")
         return EXIT_USAGE
-    code = EXIT_OK
-    printed = False  # a report went out: the next text report is set apart by a blank line
-    for path in options.files:
-        lead = "\n" if printed and options.format != "json" else ""
-        done = _time_one(options, path, lead)
-        printed |= done == EXIT_OK
-        if done == EXIT_USAGE or (done == EXIT_PROGRAM_ERROR and code == EXIT_OK):
-            code = done
-    return code
+    return each_file(options, _time_one, "" if options.format == "json" else "\n")
 
 
-def _time_one(options: argparse.Namespace, path: str, lead: str) -> int:
+def _time_one(options: argparse.Namespace, path: str) -> int:
     """One program of ``ngc time FILE...``: its report, or its error; its exit code."""
     program = open_marked(path, options.dialect)
     try:
         if program.dialect == ENGINE:
             sys.stderr.write(f"ngc time: {NOT_LINUXCNC.format(name=program.name)}\n")
             return EXIT_USAGE
-        return _time_linuxcnc(options, program, path, lead)
+        return _time_linuxcnc(options, program, path)
     finally:
         program.close()
 
 
-def _time_linuxcnc(options: argparse.Namespace, program: OpenedProgram, path: str,
-                   lead: str) -> int:
+def _time_linuxcnc(options: argparse.Namespace, program: OpenedProgram, path: str) -> int:
     from ..planner.config import load_machine
     from ..planner.trajectory import TooManyRows
     from . import time_report  # loaded on use, as the planner is
@@ -90,7 +82,6 @@ def _time_linuxcnc(options: argparse.Namespace, program: OpenedProgram, path: st
         result = _time_program(options, program, machine,
                                lambda sink: new_interpreter(sink, inputs, setup, write_files=False),
                                csv)
-        sys.stdout.write(lead)
         _print_time(options, program.name, result, machine, path)
         if csv is not None:
             csv.commit()  # the trajectory takes its name once everything else has gone well
