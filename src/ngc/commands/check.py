@@ -22,11 +22,13 @@ from ..errors import NgcError
 from ..interp.interpreter import Interpreter
 from ..interp.source import ProgramReader, open_text_program
 from ..toolpath.frame import Pos
-from ..toolpath.tracker import RAPID, ArcMove, Cubics, Toolpath
+from ..toolpath.tracker import RAPID, ArcMove, Cubics, Tee, Toolpath
 from .check_common import error_record, headline
+from .limits import Excess, LimitWatch
 
 if TYPE_CHECKING:
     from ..engine import Setup as EngineSetup
+    from ..planner.config import SoftLimits
     from .check_engine import EngineCheckResult
 
 MM_PER_UNIT = {"CANON_UNITS_MM": 1.0, "CANON_UNITS_INCHES": 25.4, "CANON_UNITS_CM": 10.0}
@@ -91,8 +93,8 @@ class Summarizer:
         "toolpath",
     )
 
-    def __init__(self) -> None:
-        self.toolpath = Toolpath(self)
+    def __init__(self, toolpath: Toolpath | None = None) -> None:
+        self.toolpath = Toolpath(self) if toolpath is None else toolpath
         self._units = "CANON_UNITS_MM"
         self._units_changed = False  # after something moved
         self._mm_per_unit = 1.0
@@ -325,11 +327,13 @@ class CheckResult:
     lines: int
     summary: Summary
     error: NgcError | None
+    limits: tuple[Excess, ...] = ()  # where the moves go past the machine's soft limits
+    machine_units: str = "mm"
     dialect = "linuxcnc"  # (an engine program's is an ngc.commands.check_engine.EngineCheckResult)
 
     @property
     def ok(self) -> bool:
-        return self.error is None
+        return self.error is None and not self.limits
 
 
 def _quiet_interpreter(sink: Sink) -> Interpreter:
@@ -342,6 +346,8 @@ def check_lines(
     new_interpreter: Callable[[Sink], Interpreter] = _quiet_interpreter,
     *,
     reader: ProgramReader | None = None,
+    limits: SoftLimits | None = None,
+    machine_units: str = "mm",
 ) -> CheckResult:
     """Run a program, given as its lines, through an interpreter, keeping only a summary of its
     motion; ``name`` is the file name errors carry.  ``new_interpreter`` makes the interpreter
@@ -350,21 +356,37 @@ def check_lines(
     Errors in the program are returned in :attr:`CheckResult.error` (interpretation stops at the
     first one); the lines after it are counted.
 
+    ``limits`` are the machine's soft limits (:func:`ngc.planner.config.soft_limits`, in
+    ``machine_units``): the moves that go past them are in :attr:`CheckResult.limits`, and the
+    program is not ``ok``.
+
     >>> result = check_lines(["G21 F100", "G1 X3", "G1 Y4", "M2"], "square.ngc")
     >>> result.ok, result.lines, result.summary.feeds, result.summary.feed_length
     (True, 4, 2, 7.0)
+    >>> past = check_lines(["G21 G0 X500 Y-5", "M2"], "far.ngc", limits={"X": (0.0, 100.0)})
+    >>> past.ok, past.limits[0].text("mm")
+    (False, 'Program exceeds machine maximum on axis X: 400.0000 mm past 100, first at line 1')
     """
-    summarizer = Summarizer()
+    watch: LimitWatch | None = None
+    if limits:
+        tee = Tee()
+        toolpath = Toolpath(tee, inch_machine=machine_units == "inch")
+        summarizer = Summarizer(toolpath)
+        watch = LimitWatch(limits, toolpath)
+        tee.readers.extend((summarizer, watch))
+    else:
+        summarizer = Summarizer()
     counted = _CountedLines(lines)
     error: NgcError | None = None
-    interp = new_interpreter(summarizer)
+    interp = new_interpreter(summarizer.toolpath)
     interp.startup()
     try:
         interp.run(counted, file=name, reader=reader)
     except NgcError as exc:
         error = exc
     return CheckResult(path=name, lines=counted.total(), summary=summarizer.summary(),
-                       error=error)
+                       error=error, limits=() if watch is None else tuple(watch.excesses()),
+                       machine_units=machine_units)
 
 
 @overload
@@ -447,8 +469,11 @@ def render(result: CheckResult) -> str:
     """``ngc check``'s report on one file: a paragraph with the line count, the moves, the path
     lengths and the extents (the error itself goes to stderr)."""
     s = result.summary
+    head = headline(result.path, result.error)
+    if result.error is None and result.limits:
+        head = f"{result.path}: past the machine's soft limits"
     paragraph = [
-        f"{headline(result.path, result.error)}, {result.lines} lines",
+        f"{head}, {result.lines} lines",
         f"  moves: {s.moves} ({s.traverses} traverse, {s.feeds} feed, {s.arcs} arc)",
         f"  rapid length: {_length_text(s.rapid_length, s.units)}, "
         f"feed length: {_length_text(s.feed_length, s.units)}",
@@ -456,6 +481,7 @@ def render(result: CheckResult) -> str:
     ]
     if s.mixed_units:
         paragraph.append(f"  (the program changes length units; all lengths are in {s.units})")
+    paragraph.extend(f"  {excess.text(result.machine_units)}" for excess in result.limits)
     return "\n".join(paragraph)
 
 
@@ -491,8 +517,13 @@ def record(result: CheckResult) -> dict[str, object]:
         "feed_length": _finite_or_none(s.feed_length),
         "extents": extents, "mixed_units": s.mixed_units,
     }  # fmt: skip
-    return {
+    out: dict[str, object] = {
         "file": result.path, "ok": result.ok, "lines": result.lines,
         "error": None if result.error is None else error_record(result.error),
         "summary": summary,
     }  # fmt: skip
+    if result.limits:
+        out["soft_limits"] = [{"axis": e.axis, "side": e.side, "limit": e.limit, "by": e.by,
+                               "line": e.line, "units": result.machine_units}
+                              for e in result.limits]
+    return out

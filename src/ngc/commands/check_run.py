@@ -81,11 +81,18 @@ def _check_file(options: argparse.Namespace, path: str) -> int:
         def quiet(sink: Sink) -> Interpreter:
             return new_interpreter(sink, inputs, setup, write_files=False)
 
+        limits, units = None, "mm"
+        if setup.ini is not None:  # (-i: the machine's soft limits, in its units)
+            from ..planner.config import ini_linear_units, soft_limits
+
+            limits, units = soft_limits(setup.ini), ini_linear_units(setup.ini)
         handle = text_reader(program.handle)
         with handle, progress_of(program.name, handle, output_to_terminal=False) as progress:
             result = report.check_lines(progress.lines(handle), program.name, quiet,
-                                        reader=handle)
+                                        reader=handle, limits=limits, machine_units=units)
         error = result.error
+        if error is None and result.limits:
+            code = EXIT_PROGRAM_ERROR
         paragraph = dumps(report.record(result)) if json_lines else report.render(result)
     if error is not None:
         sys.stderr.write(error.render() + "\n")

@@ -463,3 +463,39 @@ def load_machine(ini: Ini | None, toml_path: str | None) -> Machine:
     """
     machine = DEFAULT_MACHINE if ini is None else machine_from_ini(ini)
     return machine if toml_path is None else machine_from_toml(toml_path, machine)
+
+
+# A machine's travel: the soft limits of each axis, in machine units (degrees for A, B, C).
+SoftLimits = Mapping[str, tuple[float, float]]
+
+
+def soft_limits(ini: Ini) -> SoftLimits:
+    """Each axis's soft limits (ini-config.adoc, [AXIS_<letter>] and [JOINT_<n>] MIN_LIMIT and
+    MAX_LIMIT, in machine units): the narrower of its axis section's and its joints' where
+    several set them; an axis none of whose sections sets a limit has none (-inf or inf).
+
+    >>> ini = Ini.parse("[TRAJ]\\nCOORDINATES = X Y Z\\n[AXIS_X]\\nMIN_LIMIT = -10\\n"
+    ...                 "MAX_LIMIT = 100\\n[JOINT_0]\\nMAX_LIMIT = 90\\n[AXIS_Z]\\nMIN_LIMIT = -50\\n")
+    >>> dict(soft_limits(ini))
+    {'X': (-10.0, 90.0), 'Z': (-50.0, inf)}
+    """
+    coordinates = _ini_coordinates(ini)
+    joints = _ini_joints(ini, coordinates)
+    found: dict[str, tuple[float, float]] = {}
+    for axis in ALL_AXES:
+        if axis not in coordinates:
+            continue
+        sections = _limit_sections(axis, joints)
+        lows = [v for v in (_ini_value(ini, s, "MIN_LIMIT", parse_real, "a number")
+                            for s in sections) if v is not None]
+        highs = [v for v in (_ini_value(ini, s, "MAX_LIMIT", parse_real, "a number")
+                             for s in sections) if v is not None]
+        if lows or highs:
+            found[axis] = (max(lows) if lows else -math.inf, min(highs) if highs else math.inf)
+    return MappingProxyType(found)
+
+
+def ini_linear_units(ini: Ini) -> str:
+    """The machine's linear units, ``mm`` or ``inch`` ([TRAJ]LINEAR_UNITS; mm without it)."""
+    value = _ini_value(ini, "TRAJ", "LINEAR_UNITS", _linear_units, UNITS_EXPECTED)
+    return "mm" if value is None else value

@@ -1,0 +1,110 @@
+"""Will it fit the machine: a reader of the toolpath that finds where the moves go past the soft
+limits of the machine's axes (``[AXIS_<letter>]``/``[JOINT_<n>]`` MIN_LIMIT and MAX_LIMIT), as
+AXIS warns when it loads a program ("Program exceeds machine maximum on axis X").
+
+Positions are the toolpath's machine coordinates, in the machine's units, the tool length offset
+included (the axes' own positions); an arc counts with its extremes.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import NamedTuple
+
+from ..canon import ops
+from ..render import curves
+from ..toolpath.frame import Pos
+from ..toolpath.tracker import ArcMove, Cubics, Toolpath
+
+AXES = "XYZABC"
+UNIT_VECTORS = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+
+
+class Excess(NamedTuple):
+    """An axis going past one of its soft limits: ``side`` ``"minimum"`` or ``"maximum"``, the
+    limit, by how much at most (machine units), and the first line that goes past."""
+
+    axis: str
+    side: str
+    limit: float
+    by: float
+    line: int
+
+    def text(self, units: str) -> str:
+        unit = "deg" if self.axis in "ABC" else units
+        return (f"Program exceeds machine {self.side} on axis {self.axis}: {self.by:.4f} {unit} "
+                f"past {self.limit:g}, first at line {self.line}")
+
+
+class LimitWatch:
+    """A toolpath reader keeping, for each axis and side, the first line past the limit and the
+    greatest excess; ``excesses()`` lists them in axis order."""
+
+    def __init__(self, limits: Mapping[str, tuple[float, float]], toolpath: Toolpath) -> None:
+        self.toolpath = toolpath
+        self.limits = [(i, limits[a][0], limits[a][1]) for i, a in enumerate(AXES) if a in limits]
+        self.found: dict[tuple[int, int], tuple[float, int]] = {}  # (axis, side) -> (by, line)
+
+    def _see(self, i: int, lo_value: float, hi_value: float, line: int) -> None:
+        for axis, lo, hi in self.limits:
+            if axis != i:
+                continue
+            if lo_value < lo:
+                self._past(axis, 0, lo - lo_value, line)
+            if hi_value > hi:
+                self._past(axis, 1, hi_value - hi, line)
+
+    def _past(self, axis: int, side: int, by: float, line: int) -> None:
+        key = (axis, side)
+        held = self.found.get(key)
+        if held is None:
+            self.found[key] = (by, line)
+        elif by > held[0]:
+            self.found[key] = (by, held[1])
+
+    def _point(self, p: Sequence[float], line: int) -> None:
+        for axis, lo, hi in self.limits:
+            v = p[axis]
+            if v < lo:
+                self._past(axis, 0, lo - v, line)
+            elif v > hi:
+                self._past(axis, 1, v - hi, line)
+
+    def excesses(self) -> list[Excess]:
+        out = []
+        for (axis, side), (by, line) in sorted(self.found.items()):
+            limit = next(lim for i, *lim in self.limits if i == axis)[side]
+            out.append(Excess(AXES[axis], ("minimum", "maximum")[side], limit, by, line))
+        return out
+
+    # -- the toolpath's consumer protocol -----------------------------------------------------
+    def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
+        self._point(end, line)
+
+    def arc(self, arc: ArcMove, line: int) -> None:
+        f = curves.frame(arc.start, arc.end, arc.centre, arc.normal, arc.turns)
+        for i, v in enumerate(UNIT_VECTORS):
+            lo, hi = curves.extremes(f, v)
+            self._see(i, lo, hi, line)
+        self._point(arc.end, line)
+
+    def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
+        """A curve counts with its control points (it lies within them)."""
+        tp = self.toolpath
+        p = tp.prog
+        for x, y in curve.points:
+            self._point(tp.frame.to_machine((x, y, p[2], p[3], p[4], p[5])), line)
+
+    def tap(self, start: Pos, bottom: Pos, line: int) -> None:
+        self._point(bottom, line)
+
+    def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
+        for i, c in enumerate(cubics):
+            lo, hi = curves.cubic_range(c)
+            self._see(i, lo, hi, line)
+
+    def other(self, op: ops.Op, line: int) -> None:
+        """Nothing else moves the machine."""
+
+    def finish(self) -> None:
+        """Nothing is held back."""

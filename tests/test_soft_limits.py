@@ -1,0 +1,84 @@
+"""``ngc check -i``: the machine's soft limits ([AXIS_<letter>]/[JOINT_<n>] MIN_LIMIT, MAX_LIMIT)
+against the program's moves in machine coordinates, as AXIS warns on load."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from cli_helpers import run, write
+
+MILL = """[TRAJ]
+COORDINATES = X Y Z
+LINEAR_UNITS = mm
+[AXIS_X]
+MIN_LIMIT = -10
+MAX_LIMIT = 100
+[AXIS_Y]
+MIN_LIMIT = -200
+MAX_LIMIT = 10
+[AXIS_Z]
+MIN_LIMIT = -100
+MAX_LIMIT = 0
+[JOINT_0]
+MAX_LIMIT = 90
+"""
+
+
+def check(tmp_path: Path, capsys: pytest.CaptureFixture[str], program: str, ini: str = MILL,
+          *args: str) -> tuple[int, str, str]:
+    ini_path = write(tmp_path, "mill.ini", ini)
+    path = write(tmp_path, "p.ngc", program)
+    return run(capsys, "check", "-j", "1", "-i", ini_path, *args, path)
+
+
+def test_a_program_past_a_soft_limit_is_reported_and_fails(tmp_path: Path,
+                                                           capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = check(tmp_path, capsys, "G21 G0 X500 Y-300 Z-5\nG1 X0 Y0 F100\nM2\n")
+    assert code == 1
+    assert "past the machine's soft limits" in out.splitlines()[0]
+    # the joint's 90 is narrower than the axis's 100
+    assert "Program exceeds machine maximum on axis X: 410.0000 mm past 90, first at line 1" in out
+    assert "Program exceeds machine minimum on axis Y: 100.0000 mm past -200, first at line 1" in out
+    assert "axis Z" not in out
+
+
+def test_within_the_limits_is_ok(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = check(tmp_path, capsys, "G21 G0 X50 Y-50 Z-5\nG1 X0 Y0 F100\nM2\n")
+    assert code == 0 and out.startswith(str(tmp_path / "p.ngc") + ": ok")
+
+
+def test_an_arc_counts_with_its_extremes(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    # ends at X 80 and X 80, the half circle about X 80 Y 0 bulges to X 95
+    code, out, _ = check(tmp_path, capsys, "G21 G0 X80 Y-15 Z-1\nG3 X80 Y15 I0 J15 F100\nM2\n")
+    assert code == 1
+    assert "axis X: 5.0000 mm past 90, first at line 2" in out
+
+
+def test_the_tool_length_offset_counts(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    # rs274's sample table: T1 is 0.511 (inch, as its tool table is read) long: Z 0 is Z 12.98
+    code, out, _ = check(tmp_path, capsys, "G21 T1 M6 G43 H1\nG0 Z0\nM2\n")
+    assert code == 1
+    assert "axis Z: 12.9794 mm past 0, first at line 2" in out
+
+
+def test_an_inch_machine(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    ini = "[TRAJ]\nCOORDINATES = X Y Z\nLINEAR_UNITS = inch\n[AXIS_X]\nMAX_LIMIT = 10\n"
+    code, out, _ = check(tmp_path, capsys, "G21 G0 X300\nM2\n", ini)  # 300 mm: 11.811 inch
+    assert code == 1
+    assert "axis X: 1.8110 inch past 10, first at line 1" in out
+
+
+def test_json(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = check(tmp_path, capsys, "G21 G0 X500\nM2\n", MILL, "--format", "json")
+    record = json.loads(out)
+    assert code == 1 and record["ok"] is False
+    assert record["soft_limits"] == [{"axis": "X", "side": "maximum", "limit": 90.0, "by": 410.0,
+                                      "line": 1, "units": "mm"}]
+
+
+def test_without_limits_nothing_is_said(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = check(tmp_path, capsys, "G21 G0 X500\nM2\n", "[TRAJ]\nCOORDINATES = X Y Z\n")
+    assert code == 0 and "exceeds" not in out
