@@ -332,3 +332,20 @@ def test_check_names_the_subroutine_file_an_error_is_in(
     assert code == 1
     assert out.startswith("main.ngc: stopped by an error at line 3 of bad.ngc, 3 lines\n")
     assert err.startswith("bad.ngc:3:")
+
+
+def test_check_says_a_file_is_empty(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "empty.ngc").write_text("")
+    code, out, err = run(capsys, "check", str(tmp_path / "empty.ngc"))
+    assert code == 1
+    assert out.startswith(f"{tmp_path / 'empty.ngc'}: the file is empty, 0 lines")
+    assert err == f"{tmp_path / 'empty.ngc'}: File ended with no percent sign: the file is empty\n"
+
+
+def test_check_names_the_subroutines_a_file_only_defines(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "subs.ngc").write_text(
+        "o<a> sub\nG1 X1 F100\no<a> endsub\no100 sub\nG0 X0\no100 endsub\nM2\n")
+    code, out, _ = run(capsys, "check", str(tmp_path / "subs.ngc"))
+    assert code == 0
+    assert "  no moves: the file defines o<a>, o100 (a subroutine file is checked" in out

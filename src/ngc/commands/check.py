@@ -329,6 +329,7 @@ class CheckResult:
     error: NgcError | None
     limits: tuple[Excess, ...] = ()  # where the moves go past the machine's soft limits
     machine_units: str = "mm"
+    subroutines: tuple[str, ...] = ()  # those a program that moved nothing only defined
     dialect = "linuxcnc"  # (an engine program's is an ngc.commands.check_engine.EngineCheckResult)
 
     @property
@@ -384,9 +385,14 @@ def check_lines(
         interp.run(counted, file=name, reader=reader)
     except NgcError as exc:
         error = exc
-    return CheckResult(path=name, lines=counted.total(), summary=summarizer.summary(),
+    summary = summarizer.summary()
+    defined: tuple[str, ...] = ()
+    if error is None and summary.moves == 0:
+        defined = tuple(f"o{label}" if label.isdigit() else f"o<{label}>"
+                        for label in interp.flow.subs)
+    return CheckResult(path=name, lines=counted.total(), summary=summary,
                        error=error, limits=() if watch is None else tuple(watch.excesses()),
-                       machine_units=machine_units)
+                       machine_units=machine_units, subroutines=defined)
 
 
 @overload
@@ -472,6 +478,8 @@ def render(result: CheckResult) -> str:
     head = headline(result.path, result.error)
     if result.error is None and result.limits:
         head = f"{result.path}: past the machine's soft limits"
+    elif result.lines == 0:
+        head = f"{result.path}: the file is empty"
     paragraph = [
         f"{head}, {result.lines} lines",
         f"  moves: {s.moves} ({s.traverses} traverse, {s.feeds} feed, {s.arcs} arc)",
@@ -482,6 +490,9 @@ def render(result: CheckResult) -> str:
     if s.mixed_units:
         paragraph.append(f"  (the program changes length units; all lengths are in {s.units})")
     paragraph.extend(f"  {excess.text(result.machine_units)}" for excess in result.limits)
+    if result.subroutines:
+        paragraph.append(f"  no moves: the file defines {', '.join(result.subroutines)} (a "
+                         "subroutine file is checked through a program that calls it)")
     return "\n".join(paragraph)
 
 

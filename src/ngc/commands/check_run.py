@@ -95,7 +95,11 @@ def _check_file(options: argparse.Namespace, path: str) -> int:
             code = EXIT_PROGRAM_ERROR
         paragraph = dumps(report.record(result)) if json_lines else report.render(result)
     if error is not None:
-        sys.stderr.write(error.render() + "\n")
+        if program.dialect != ENGINE and result.lines == 0:
+            # (rs274's message, then what it is about: there is nothing in the file)
+            sys.stderr.write(f"{program.name}: {error.message}: the file is empty\n")
+        else:
+            sys.stderr.write(error.render() + "\n")
         code = EXIT_PROGRAM_ERROR
     sys.stdout.write(paragraph + "\n")
     return code
