@@ -204,3 +204,17 @@ def test_engine_programs_are_drawn_from_their_cubics(tmp_path: Path,
 def test_an_unreadable_program(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     code, _, err = run(capsys, "plot", str(tmp_path / "none.ngc"), "-o", str(tmp_path / "x.svg"))
     assert code == 2 and "none.ngc" in err
+
+
+@pytest.mark.parametrize("view", ["top", "iso", "front"])
+@pytest.mark.parametrize("program", [
+    "#1=[EXP[690]]\nG0 X#1 Y[0-#1]\nG1 X0 F100\nM2\n",  # a path past a double's range
+    "G1 X1 F100\n#1=[EXP[460]]\nG2 X1 Y0 I#1 J0 P3\nM2\n",  # an arc of radius 1e200
+    "G1 X1 F100\nG0 X[EXP[700]]\nG0 X[0-EXP[700]]\nM2\n",
+])
+def test_numbers_past_a_doubles_range_draw_nothing_they_cannot(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str], program: str, view: str) -> None:
+    code, text, _ = plot(tmp_path, capsys, program, "--view", view)
+    assert code == 0
+    assert "nan" not in text and "inf" not in text
+    read_svg(text)

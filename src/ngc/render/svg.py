@@ -63,6 +63,9 @@ def layout(scene: Scene, width: float, height: float) -> Layout:
         return Layout(width, height, 1.0, left + aw / 2, top + ah / 2)
     w = box.high[0] - box.low[0]
     h = box.high[1] - box.low[1]
+    if not (math.isfinite(w) and math.isfinite(h)):
+        # (extents past a double's range: drawn about the origin at one pixel a unit)
+        return Layout(width, height, 1.0, left + aw / 2, top + ah / 2)
     candidates = [aw / w if w > 0 else math.inf, ah / h if h > 0 else math.inf]
     s = min(candidates)
     if s == math.inf:
@@ -157,6 +160,9 @@ def _paths(out: TextIO, records: Iterable[tuple[float, ...]], colors: Colors,
         if kind == MARK:
             marks.append(rec)
             continue
+        total = sum(rec[3:])
+        if total - total != 0.0:
+            continue  # (a coordinate past a double's range, or not a number: nothing to draw)
         if rec[1] != key or rec[2] != dashed or count >= PATH_SEGMENTS:
             if held:
                 parts.append(f"L{_n(hu)} {_n(hv)}")
@@ -207,6 +213,8 @@ def _marks(out: TextIO, marks: Sequence[tuple[float, ...]], lay: Layout) -> None
     out.write('<g id="marks">\n')
     for rec in marks:
         x, y = lay.px(rec[3], rec[4])
+        if not (math.isfinite(x) and math.isfinite(y)):
+            continue
         if rec[1] == DRILL:
             out.write(f'<circle cx="{_p(x)}" cy="{_p(y)}" r="3.5" fill="none" '
                       f'stroke="#333" stroke-width="1"/>\n')
@@ -234,20 +242,29 @@ def _nice(length: float) -> float:
 def _frame(out: TextIO, scene: Scene, labels: Labels, lay: Layout) -> None:
     """Title, legend, dimension lines, scale bar and the error, in pixels."""
     u = labels.mm_per_unit
-    title = f"{labels.name}: path {scene.length / u:.3f} {labels.units}"
-    title += f" (rapid {scene.rapid_length / u:.3f})"
+    title = f"{labels.name}: path {_length(scene.length / u, labels.units)}"
+    title += f" (rapid {_length(scene.rapid_length / u, '')})"
     if labels.time_s is not None:
         title += f", cycle time {labels.time_s:.2f} s"
     title += f", {scene.view.name} view"
     out.write(f'<text id="title" x="{_p(MARGIN[0])}" y="28" font-size="16">'
               f"{escape(title)}</text>\n")
     _legend(out, scene, lay)
-    if not scene.box.empty:
+    box = scene.box
+    shown = (*box.low, *box.high)
+    if scene.view.axes is None:  # (the isometric view gives the X Y Z extents)
+        shown += (*scene.extents.low, *scene.extents.high)
+    if not box.empty and all(math.isfinite(v) for v in shown):
         _dimensions(out, scene, labels, lay)
         _scale_bar(out, labels, lay)
     if labels.error is not None:
         out.write(f'<text id="error" x="{_p(MARGIN[0])}" y="{_p(lay.height - 12)}" '
                   f'fill="#d62728">{escape(labels.error)}</text>\n')
+
+
+def _length(value: float, units: str) -> str:
+    text = f"{value:.3f} {units}" if math.isfinite(value) else "past a double's range"
+    return text.rstrip()
 
 
 def _legend(out: TextIO, scene: Scene, lay: Layout) -> None:
