@@ -349,3 +349,16 @@ def test_check_names_the_subroutines_a_file_only_defines(
     code, out, _ = run(capsys, "check", str(tmp_path / "subs.ngc"))
     assert code == 0
     assert "  no moves: the file defines o<a>, o100 (a subroutine file is checked" in out
+
+
+def test_check_gives_x_as_a_diameter_in_diameter_mode(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "l.ngc").write_text("G18 G7 G21 G0 X40 Z2\nG1 X10 Z-5 F100\nM2\n")
+    (tmp_path / "r.ngc").write_text("G18 G8 G21 G0 X40 Z2\nG1 X10 Z-5 F100\nM2\n")
+    _, out, _ = run(capsys, "check", "-j", "1", str(tmp_path / "l.ngc"), str(tmp_path / "r.ngc"))
+    lathe, radius = out.split("\n\n")
+    assert "extents: X (diameter) 10.0000 .. 40.0000  Y" in lathe
+    assert "extents: X 10.0000 .. 40.0000  Y" in radius
+    _, out, _ = run(capsys, "check", "--format", "json", str(tmp_path / "l.ngc"))
+    record = json.loads(out)
+    assert record["x_as_diameter"] is True and record["summary"]["extents"]["high"][0] == 20.0

@@ -330,6 +330,7 @@ class CheckResult:
     limits: tuple[Excess, ...] = ()  # where the moves go past the machine's soft limits
     machine_units: str = "mm"
     subroutines: tuple[str, ...] = ()  # those a program that moved nothing only defined
+    diameter: bool = False  # the program ends in a lathe's diameter mode (G7): X as a diameter
     dialect = "linuxcnc"  # (an engine program's is an ngc.commands.check_engine.EngineCheckResult)
 
     @property
@@ -392,7 +393,8 @@ def check_lines(
                         for label in interp.flow.subs)
     return CheckResult(path=name, lines=counted.total(), summary=summary,
                        error=error, limits=() if watch is None else tuple(watch.excesses()),
-                       machine_units=machine_units, subroutines=defined)
+                       machine_units=machine_units, subroutines=defined,
+                       diameter=interp.machine.state.lathe_diameter)
 
 
 @overload
@@ -485,7 +487,7 @@ def render(result: CheckResult) -> str:
         f"  moves: {s.moves} ({s.traverses} traverse, {s.feeds} feed, {s.arcs} arc)",
         f"  rapid length: {_length_text(s.rapid_length, s.units)}, "
         f"feed length: {_length_text(s.feed_length, s.units)}",
-        f"  extents: {_extents_text(s)}",
+        f"  extents: {_extents_text(s, result.diameter)}",
     ]
     if s.mixed_units:
         paragraph.append(f"  (the program changes length units; all lengths are in {s.units})")
@@ -504,11 +506,16 @@ def _length_text(length: float, units: str) -> str:
     return f"past a double's range ({units})"
 
 
-def _extents_text(s: Summary) -> str:
+def _extents_text(s: Summary, diameter: bool = False) -> str:
+    """The extents; X as the program gives it (a diameter in a lathe's diameter mode, G7: twice
+    the radius canon moves along)."""
     if s.extents is None:
         return "none (no motion)"
-    lo, hi = s.extents.low, s.extents.high
-    return "  ".join(f"{a} {lo[i]:.4f} .. {hi[i]:.4f}" for i, a in enumerate("XYZ")) + f" {s.units}"
+    lo, hi = list(s.extents.low), list(s.extents.high)
+    names = ["X", "Y", "Z"]
+    if diameter:
+        lo[0], hi[0], names[0] = 2.0 * lo[0], 2.0 * hi[0], "X (diameter)"
+    return "  ".join(f"{a} {lo[i]:.4f} .. {hi[i]:.4f}" for i, a in enumerate(names)) + f" {s.units}"
 
 
 def _finite_or_none(value: float) -> float | None:
@@ -533,6 +540,8 @@ def record(result: CheckResult) -> dict[str, object]:
         "error": None if result.error is None else error_record(result.error),
         "summary": summary,
     }  # fmt: skip
+    if result.diameter:
+        out["x_as_diameter"] = True  # (the extents' X stay radii, as canon gives them)
     if result.limits:
         out["soft_limits"] = [{"axis": e.axis, "side": e.side, "limit": e.limit, "by": e.by,
                                "line": e.line, "units": result.machine_units}
