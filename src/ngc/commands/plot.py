@@ -165,6 +165,7 @@ def _write(scene: Scene, name: str, output: str, options: PlotOptions, error: Ng
             _write_png(output, scene, labels, options)
     finally:
         scene.spool.close()
+        scene.marks.close()
     return PlotResult(output, scene.length, error, time_s)
 
 

@@ -162,7 +162,7 @@ class Scene:
     After the run: ``box`` (the drawing's extents in the view), ``extents`` (machine X Y Z; the
     isometric view's dimensions: other views take arcs' extremes into ``box`` only),
     ``length`` (machine units, rapids and feeds), ``keys`` (the colour keys used),
-    ``spool`` (the primitives), ``stopped`` (where the program stopped on an error)."""
+    ``spool`` (the primitives), ``marks`` (the marks)."""
 
     def __init__(self, view: View, *, color: str = "kind", approach: bool = False,
                  inch_machine: bool = False, toolpath: Toolpath | None = None) -> None:
@@ -174,16 +174,15 @@ class Scene:
         self.held: list[tuple[Callable[..., None], tuple[Any, ...]]] = []  # the approach's rapids
         self.toolpath = Toolpath(self, inch_machine=inch_machine) if toolpath is None else toolpath
         self.spool = Spool()
+        self.marks = Spool(limit=1 << 12)  # drill points, tool changes, the stop: drawn on top
         self.box = Box(2)
         self.extents = Box(3)
         self.length = 0.0
         self.rapid_length = 0.0
         self.keys: set[float] = set()
         self.key_lo, self.key_hi = math.inf, -math.inf
-        self.marks = 0
         self.feed = 0.0
         self.plunge: tuple[Pos, int] | None = None  # a straight feed down Z, and its line
-        self.tools: list[int] = []
         self.last_end: Sequence[float] | None = None  # the end of the last move drawn
         self.last_uv = (0.0, 0.0)  # its place in the view
         self.kind_keys = KIND_INDEX if color == "kind" else None
@@ -253,8 +252,7 @@ class Scene:
 
     def mark(self, kind: float, p: Sequence[float], value: float = 0.0) -> None:
         u, v = self._uv(p)
-        self.spool.add((MARK, kind, 0.0, u, v, value))
-        self.marks += 1
+        self.marks.add((MARK, kind, 0.0, u, v, value))
 
     # -- the toolpath's consumer protocol -----------------------------------------------------
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
@@ -502,7 +500,6 @@ class Scene:
             self.feed = op.rate * self.toolpath.frame.scale  # type: ignore[attr-defined]
         elif kind is ops.ChangeTool:
             tool = self.toolpath.tool
-            self.tools.append(tool)
             if self.drawing:
                 self.mark(TOOL_CHANGE, self.toolpath.pos, float(tool))
 

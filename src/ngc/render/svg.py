@@ -7,11 +7,23 @@ from the scene's spool to the file; runs of lines shorter than half a pixel are 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
 from html import escape
 from typing import NamedTuple, TextIO
 
-from .scene import ARC_2D, COLOR_KEYS, CUBIC, DRILL, KINDS, LINE, MARK, QUAD, STOPPED, TOOL_CHANGE, Scene
+from .scene import (
+    ARC_2D,
+    COLOR_KEYS,
+    CUBIC,
+    DRILL,
+    KINDS,
+    LINE,
+    QUAD,
+    STOPPED,
+    TOOL_CHANGE,
+    Scene,
+    Spool,
+)
 
 KIND_COLORS = ("#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#17becf")
 TOOL_COLORS = ("#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
@@ -129,19 +141,18 @@ def write(out: TextIO, scene: Scene, labels: Labels, width: float = 1200.0,
     out.write('<rect width="100%" height="100%" fill="white"/>\n')
     out.write(f'<g id="toolpath" transform="matrix({_n(lay.s)} 0 0 {_n(-lay.s)} '
               f'{_n(lay.tx)} {_n(lay.ty)})">\n')
-    marks = _paths(out, scene.spool, colors, JOIN_PX / lay.s)
+    _paths(out, scene.spool, colors, JOIN_PX / lay.s)
     out.write("</g>\n")
-    _marks(out, marks, lay)
+    _marks(out, scene.marks, lay)
     _frame(out, scene, labels, lay)
     out.write("</svg>\n")
 
 
 def _paths(out: TextIO, records: Iterable[tuple[float, ...]], colors: Colors,
-           join: float) -> list[tuple[float, ...]]:
+           join: float) -> None:
     """Write the primitives as paths, one per run of one colour and dash (at most
-    :data:`PATH_SEGMENTS` each); return the marks.  Lines that end within ``join`` (half a
-    pixel) of the pen are held and drawn as one."""
-    marks: list[tuple[float, ...]] = []
+    :data:`PATH_SEGMENTS` each).  Lines that end within ``join`` (half a pixel) of the pen are
+    held and drawn as one."""
     key = dashed = math.nan  # the path's style
     parts: list[str] = []
     count = 0
@@ -157,9 +168,6 @@ def _paths(out: TextIO, records: Iterable[tuple[float, ...]], colors: Colors,
 
     for rec in records:
         kind = rec[0]
-        if kind == MARK:
-            marks.append(rec)
-            continue
         total = sum(rec[3:])
         if total - total != 0.0:
             continue  # (a coordinate past a double's range, or not a number: nothing to draw)
@@ -204,11 +212,10 @@ def _paths(out: TextIO, records: Iterable[tuple[float, ...]], colors: Colors,
     if held:
         parts.append(f"L{_n(hu)} {_n(hv)}")
     close()
-    return marks
 
 
-def _marks(out: TextIO, marks: Sequence[tuple[float, ...]], lay: Layout) -> None:
-    if not marks:
+def _marks(out: TextIO, marks: Spool, lay: Layout) -> None:
+    if not marks.count:
         return
     out.write('<g id="marks">\n')
     for rec in marks:
