@@ -156,36 +156,18 @@ class Summarizer:
         self._include(q)
 
     def arc(self, arc: ArcMove, line: int) -> None:
-        """An arc: its length and its extremes, as :class:`Arc` works them out (written out
-        here, the same operations: this is the hot path of arc-heavy programs)."""
         self._arcs += 1
         first, second, axis = self.toolpath.plane
         op, pos = arc.op, arc.prog_start
-        s1, s2, z0 = pos[first], pos[second], pos[axis]
-        e1, e2, z1 = op.first_end, op.second_end, op.axis_end_point
-        c1, c2, rotation = op.first_axis, op.second_axis, op.rotation
-        r0 = math.hypot(s1 - c1, s2 - c2)
-        r1 = math.hypot(e1 - c1, e2 - c2)
-        a0 = math.atan2(s2 - c2, s1 - c1)
-        a1 = math.atan2(e2 - c2, e1 - c1)
-        delta = (a1 - a0) % TAU if rotation > 0 else (a0 - a1) % TAU
-        if delta == 0.0:
-            delta = TAU
-        sweep = delta + TAU * (max(abs(rotation), 1) - 1)
-        direction = 1.0 if rotation > 0 else -1.0
+        extremes, length = arc_bounds((pos[first], pos[second], pos[axis]),
+                                      (op.first_end, op.second_end, op.axis_end_point),
+                                      (op.first_axis, op.second_axis), op.rotation)
         xyz = [0.0, 0.0, 0.0]
-        for theta in QUADRANT_ANGLES:
-            travelled = ((theta - a0) * direction) % TAU
-            if travelled > sweep:
-                continue
-            t = travelled / sweep
-            r = r0 + (r1 - r0) * t
-            xyz[first] = c1 + r * math.cos(theta)
-            xyz[second] = c2 + r * math.sin(theta)
-            xyz[axis] = z0 + (z1 - z0) * t
+        for p in extremes:
+            xyz[first], xyz[second], xyz[axis] = p
             self._include(xyz)
         self._include(self.toolpath.prog_end)
-        self._feed_length += math.hypot(sweep * (r0 + r1) / 2.0, z1 - z0)
+        self._feed_length += length
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
         """A curve is not counted (its end is where the next move starts)."""
@@ -253,49 +235,51 @@ class Arc:
     center: tuple[float, float]
     rotation: int
 
-    def _radii(self) -> tuple[float, float]:
-        c1, c2 = self.center
-        return (
-            math.hypot(self.start[0] - c1, self.start[1] - c2),
-            math.hypot(self.end[0] - c1, self.end[1] - c2),
-        )
-
-    def _start_angle(self) -> float:
-        return math.atan2(self.start[1] - self.center[1], self.start[0] - self.center[0])
-
     def sweep(self) -> float:
         """The angle travelled, in radians (always positive; a full circle when start == end)."""
-        a0 = self._start_angle()
-        a1 = math.atan2(self.end[1] - self.center[1], self.end[0] - self.center[0])
-        delta = (a1 - a0) % TAU if self.rotation > 0 else (a0 - a1) % TAU
-        if delta == 0.0:
-            delta = TAU
-        return delta + TAU * (max(abs(self.rotation), 1) - 1)
+        return _sweep(self.start, self.end, self.center, self.rotation)
 
     def length(self) -> float:
         """Path length, helix rise included."""
-        r0, r1 = self._radii()
-        planar = self.sweep() * (r0 + r1) / 2.0
-        return math.hypot(planar, self.end[2] - self.start[2])
+        return arc_bounds(self.start, self.end, self.center, self.rotation)[1]
 
     def extremes(self) -> list[Point]:
         """The points where the arc crosses the 0°, 90°, 180° and 270° directions of its
         center: with the end points, they bound the arc."""
-        sweep = self.sweep()
-        a0 = self._start_angle()
-        direction = 1.0 if self.rotation > 0 else -1.0
-        r0, r1 = self._radii()
-        c1, c2 = self.center
-        z0, z1 = self.start[2], self.end[2]
-        points = []
-        for theta in QUADRANT_ANGLES:
-            travelled = ((theta - a0) * direction) % TAU
-            if travelled > sweep:
-                continue
-            t = travelled / sweep
-            r = r0 + (r1 - r0) * t
-            points.append((c1 + r * math.cos(theta), c2 + r * math.sin(theta), z0 + (z1 - z0) * t))
-        return points
+        return arc_bounds(self.start, self.end, self.center, self.rotation)[0]
+
+
+def _sweep(start: Point, end: Point, center: tuple[float, float], rotation: int) -> float:
+    c1, c2 = center
+    a0 = math.atan2(start[1] - c2, start[0] - c1)
+    a1 = math.atan2(end[1] - c2, end[0] - c1)
+    delta = (a1 - a0) % TAU if rotation > 0 else (a0 - a1) % TAU
+    if delta == 0.0:
+        delta = TAU
+    return delta + TAU * (max(abs(rotation), 1) - 1)
+
+
+def arc_bounds(start: Point, end: Point, center: tuple[float, float],
+               rotation: int) -> tuple[list[Point], float]:
+    """An :class:`Arc`'s extremes (see :meth:`Arc.extremes`) and its length, worked out at
+    once (the summary's hot path for arc-heavy programs)."""
+    c1, c2 = center
+    s1, s2, z0 = start
+    z1 = end[2]
+    r0 = math.hypot(s1 - c1, s2 - c2)
+    r1 = math.hypot(end[0] - c1, end[1] - c2)
+    a0 = math.atan2(s2 - c2, s1 - c1)
+    sweep = _sweep(start, end, center, rotation)
+    direction = 1.0 if rotation > 0 else -1.0
+    points = []
+    for theta in QUADRANT_ANGLES:
+        travelled = ((theta - a0) * direction) % TAU
+        if travelled > sweep:
+            continue
+        t = travelled / sweep
+        r = r0 + (r1 - r0) * t
+        points.append((c1 + r * math.cos(theta), c2 + r * math.sin(theta), z0 + (z1 - z0) * t))
+    return points, math.hypot(sweep * (r0 + r1) / 2.0, z1 - z0)
 
 
 def summarize(operations: Iterable[Op]) -> Summary:

@@ -139,17 +139,7 @@ class Toolpath:
         else:
             self.emit(kind(*fields), label, line)
             return
-        # (``_line`` written out: the hot path of every program)
-        frame = self.frame
-        if frame.identity:
-            end: Pos = tuple(fields)
-            self.prog_end = end
-        else:
-            end = frame.to_machine(fields)
-            self.prog_end = tuple(fields)
-        self._straight(move, self.pos, end, line)
-        self.pos = end
-        self.prog = self.prog_end
+        self._line(move, fields, line)
 
     def print_text(self, text: str) -> None:
         """``(PRINT,...)`` output does not move the machine."""
