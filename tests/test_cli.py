@@ -81,13 +81,13 @@ def test_canon_json(capsys: pytest.CaptureFixture[str], good: Path) -> None:
     assert records[-1]["op"] == "PROGRAM_END"
 
 
-def test_canon_error_is_placed_with_caret(capsys: pytest.CaptureFixture[str], bad: Path) -> None:
+def test_canon_error_is_placed_at_its_line(capsys: pytest.CaptureFixture[str], bad: Path) -> None:
+    # an error found running a line has a line and no column: no column 1, no caret
     code, out, err = run(capsys, "canon", str(bad))
     assert code == 1
     assert err.splitlines() == [
-        f"{bad}:3:1: {BAD_MESSAGE}",
+        f"{bad}:3: {BAD_MESSAGE}",
         "    G2 X2 R0.1",
-        "    ^",
     ]
     assert "STRAIGHT_FEED(1.0000" in out  # what ran before the error is printed
     assert "ARC_FEED" not in out
@@ -123,7 +123,7 @@ def test_check_bad_file(capsys: pytest.CaptureFixture[str], bad: Path) -> None:
     code, out, err = run(capsys, "check", str(bad))
     lines = out.splitlines()
     assert code == 1
-    assert err.splitlines() == [f"{bad}:3:1: {BAD_MESSAGE}", "    G2 X2 R0.1", "    ^"]
+    assert err.splitlines() == [f"{bad}:3: {BAD_MESSAGE}", "    G2 X2 R0.1"]
     assert lines[0] == f"{bad}: stopped by an error at line 3, 4 lines"
     assert lines[1] == "  moves: 1 (0 traverse, 1 feed, 0 arc)"
 
@@ -146,7 +146,7 @@ def test_check_multiple_files(capsys: pytest.CaptureFixture[str], good: Path, ba
     assert paragraphs[0].startswith(f"{good}: ok")
     assert paragraphs[1].startswith(f"{bad}: stopped by an error at line 3, 4 lines\n")
     assert paragraphs[2].startswith(f"{good}: ok")
-    assert err.startswith(f"{bad}:3:1: {BAD_MESSAGE}\n")
+    assert err.startswith(f"{bad}:3: {BAD_MESSAGE}\n")
 
 
 def test_check_missing_file(
@@ -250,7 +250,7 @@ def test_console_entry_point_end_to_end(bad: Path) -> None:
         capture_output=True, text=True, timeout=60, check=False,
     )  # fmt: skip
     assert proc.returncode == 1
-    assert proc.stderr.startswith(f"{bad}:3:1: {BAD_MESSAGE}\n")
+    assert proc.stderr.startswith(f"{bad}:3: {BAD_MESSAGE}\n")
     assert "Traceback" not in proc.stderr
 
 

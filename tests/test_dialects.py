@@ -231,8 +231,9 @@ def test_check_engine_error(capsys: pytest.CaptureFixture[str], work: Path) -> N
     code, out, _ = run(capsys, "check", "--dialect", "engine", "--format", "json", "bad.ngc")
     record = json.loads(out)
     assert code == 1 and record["ok"] is False
-    assert record["error"] == {"message": "Unknown name 'frobnicate'", "file": "bad.ngc",
-                               "line": 3, "column": 1, "source": "frobnicate"}
+    assert record["error"] == {"message": "Unknown name 'frobnicate'", "about": None,
+                               "file": "bad.ngc", "line": 3, "column": 1,
+                               "source": "frobnicate"}
     assert record["summary"]["length"] == pytest.approx(2.0)
 
 
@@ -306,7 +307,7 @@ def test_stdin_marker_through_a_pipe(work: Path) -> None:
     assert (piped.returncode, piped.stdout) == (0, named.stdout)
     long_first = b"(" + b"a" * 600 + b")\nM2\n"
     piped = ngc_process("check", "-", cwd=work, stdin=long_first)
-    assert piped.returncode == 1 and b"<stdin>:1:1: Command too long" in piped.stderr
+    assert piped.returncode == 1 and b"<stdin>:1: Command too long" in piped.stderr
 
 
 def test_stdin_marker_from_a_file(capsys: pytest.CaptureFixture[str], work: Path,

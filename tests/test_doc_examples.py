@@ -4,6 +4,7 @@ makes of them now."""
 
 from __future__ import annotations
 
+import json
 import re
 import shutil
 import subprocess
@@ -45,12 +46,12 @@ def test_command_runs(doc: str, command: str, tmp_path: Path) -> None:
     assert done.returncode == 0, done.stderr
 
 
-SHOWN = re.compile(r"<!-- output of: (ngc [^>]*?) -->\n```\n(.*?)```", re.S)
+SHOWN = re.compile(r"<!-- (output|stderr|json) of: (ngc [^>]*?) -->\n```\n(.*?)```", re.S)
 
 
-def _shown_outputs() -> list[tuple[str, str, str]]:
-    return [(doc.relative_to(ROOT).as_posix(), command, text) for doc in DOCS
-            for command, text in SHOWN.findall(doc.read_text())]
+def _shown_outputs() -> list[tuple[str, str, str, str]]:
+    return [(doc.relative_to(ROOT).as_posix(), stream, command, text) for doc in DOCS
+            for stream, command, text in SHOWN.findall(doc.read_text())]
 
 
 SHOWN_OUTPUTS = _shown_outputs()
@@ -60,13 +61,19 @@ def test_docs_show_outputs() -> None:
     assert SHOWN_OUTPUTS
 
 
-@pytest.mark.parametrize(("doc", "command", "text"), SHOWN_OUTPUTS,
-                         ids=[f"{d}: {c}" for d, c, _ in SHOWN_OUTPUTS])
-def test_shown_output_is_the_commands(doc: str, command: str, text: str) -> None:
-    """A block after ``<!-- output of: ngc ... -->`` is what the command prints now."""
+@pytest.mark.parametrize(("doc", "stream", "command", "text"), SHOWN_OUTPUTS,
+                         ids=[f"{d}: {s} of {c}" for d, s, c, _ in SHOWN_OUTPUTS])
+def test_shown_output_is_the_commands(doc: str, stream: str, command: str, text: str) -> None:
+    """A block after ``<!-- output of: ngc ... -->`` is what the command prints now on stdout,
+    after ``<!-- stderr of: ... -->`` on stderr; after ``<!-- json of: ... -->`` the same JSON
+    (shown on several lines)."""
     done = subprocess.run([sys.executable, "-m", "ngc", *command.split()[1:]], cwd=ROOT,
                           capture_output=True, text=True, timeout=300)
-    assert done.stdout == text, f"{doc}: the output shown for `{command}` has drifted"
+    drifted = f"{doc}: the {stream} shown for `{command}` has drifted"
+    if stream == "json":
+        assert json.loads(done.stdout) == json.loads(text), drifted
+    else:
+        assert (done.stderr if stream == "stderr" else done.stdout) == text, drifted
 
 
 PYTHON = re.compile(r"```python\n(.*?)```", re.S)

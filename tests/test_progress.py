@@ -233,7 +233,7 @@ def test_errors_come_after_the_erased_line(big: Path, tmp_path: Path) -> None:
     assert code == 1
     before, _, error = terminal.rpartition(b"\r\x1b[K")
     assert before.startswith(b"\r\x1b[K")
-    assert error.startswith(f"{bad}:60002:1: Arc radius too small".encode())
+    assert error.startswith(f"{bad}:60002: Arc radius too small".encode())
 
 
 @pytest.mark.parametrize("command", [["canon"], ["check"], ["rs274", "-g"]])

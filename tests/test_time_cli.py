@@ -231,7 +231,7 @@ def test_a_program_error_prints_no_time(capsys: pytest.CaptureFixture[str], tmp_
                  ["time", "--trajectory", str(out_csv), path]):
         code, out, err = run(capsys, *argv)
         assert (code, out) == (1, "")
-        assert err.splitlines()[0] == f"{path}:3:1: Arc radius too small to reach end point"
+        assert err.splitlines()[0] == f"{path}:3: Arc radius too small to reach end point"
     assert out_csv.read_text() == "kept\n"  # the file named is replaced only by a good run
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.ngc", "out.csv"]
 

@@ -91,7 +91,7 @@ def test_out_of_reach_on_the_command_line(capsys: pytest.CaptureFixture[str],
     path = write(tmp_path, "p.ngc", f"G0X{NINES}M2\n")
     code, out, err = run(capsys, "time", "--format", "json", path)
     assert (code, out) == (1, "")
-    assert err.startswith(f"{path}:1:1: ngc time: the move goes past 1e+09 machine units")
+    assert err.startswith(f"{path}:1: ngc time: the move goes past 1e+09 machine units")
 
 
 def test_a_failed_run_leaves_no_trajectory(capsys: pytest.CaptureFixture[str],
@@ -158,7 +158,7 @@ def test_a_missing_axis_on_the_command_line(capsys: pytest.CaptureFixture[str],
     path = write(tmp_path, "p.ngc", "G0A5M2\n")
     code, out, err = run(capsys, "time", "-i", ini, "--format", "json", path)
     assert (code, out) == (1, "")
-    assert err == (f"{path}:1:1: ngc time: the move changes A, and the machine has no A axis "
+    assert err == (f"{path}:1: ngc time: the move changes A, and the machine has no A axis "
                    "(its axes: U)\n")
 
 

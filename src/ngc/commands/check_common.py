@@ -20,8 +20,8 @@ def headline(path: str, error: NgcError | None) -> str:
 
 
 def error_record(error: NgcError) -> dict[str, object]:
-    """An error as a JSON-ready mapping: message, file, line, column (1 when only the line is
-    known, as in :meth:`NgcError.where`), source line."""
-    column = error.column or (None if error.line is None else 1)
-    return {"message": error.message, "file": error.file, "line": error.line,
-            "column": column, "source": error.source}
+    """An error as a JSON-ready mapping: rs274's message, what it is about (or None), file,
+    line, column (None where only the line is known, as for an error found running it), source
+    line."""
+    return {"message": error.text_message(), "about": error.about_text(), "file": error.file,
+            "line": error.line, "column": error.column, "source": error.source}

@@ -120,6 +120,6 @@ def _check_engine(program: OpenedProgram, setup: EngineSetup | None, json_lines:
 
 def _unreadable(name: str, exc: OSError) -> dict[str, object]:
     """``ngc check --format json``'s object for a file that cannot be opened."""
-    error = {"message": f"cannot open: {exc.strerror}", "file": name, "line": None,
-             "column": None, "source": None}
+    error = {"message": f"cannot open: {exc.strerror}", "about": None, "file": name,
+             "line": None, "column": None, "source": None}
     return {"file": name, "ok": False, "lines": None, "error": error, "summary": None}

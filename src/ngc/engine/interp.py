@@ -328,7 +328,9 @@ def _line(eng: Engine, n: int, raw: str) -> Iterator[Op]:
             return
         named = split_name(words)
         if named is None:
-            raise EngineError(f"Unknown name '{words[0]}'")
+            err = EngineError(f"Unknown name '{words[0]}'")
+            err.token = words[0]
+            raise err
         code, used = named
         rest = words[used:]
     if code in _MODAL and rest and (_G_NUMBER.match(rest[0]) or rest[0].upper() == "F"

@@ -319,7 +319,9 @@ class _Reader:
             elif c == ";":
                 break
             else:
-                raise self.error(f"Bad character '{_show_char(c)}' used")
+                err = self.error(f"Bad character '{_show_char(c)}' used")
+                err.char = c
+                raise err
 
     def read_oword(self, skim: bool = False) -> None:
         """An o-word line: label, keyword, its bracketed values, then comments only.

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from types import MappingProxyType
 
-from ..errors import NgcSemanticError, NgcSyntaxError
+from ..errors import NgcError, NgcSemanticError, NgcSyntaxError
 from .codes import AXIS_LETTERS, FREE_LETTERS, G_CANCEL_MOTION, G_MOTION, POLAR_LETTERS, CodeTable
 
 INTEGER_LETTERS = frozenset("hlt")  # D is a real: a diameter for G41.1/G42.1, a speed for G96
@@ -64,7 +64,16 @@ def integer_value(value: float) -> int:
 
 
 def add_word(words: Words, letter: str, v: float, table: CodeTable) -> None:
-    """Add one word, raising rs274's read errors."""
+    """Add one word, raising rs274's read errors (which name the word: ``NgcError.word``)."""
+    try:
+        _add_word(words, letter, v, table)
+    except NgcError as err:
+        if err.word is None:
+            err.word = (letter, v)
+        raise
+
+
+def _add_word(words: Words, letter: str, v: float, table: CodeTable) -> None:
     if letter == "g":
         _g_word(words, v, table)
     elif letter == "m":
@@ -88,7 +97,9 @@ def check_signs(w: dict[str, float]) -> None:
     """The read-time sign rules of :func:`add_word`, for words read without it (in line order)."""
     for letter, v in w.items():
         if v < 0.0 and letter in _SIGNED_AS_READ:
-            raise NgcSemanticError(_SIGNED_AS_READ[letter])
+            err = NgcSemanticError(_SIGNED_AS_READ[letter])
+            err.word = (letter, v)
+            raise err
 
 
 def _g_word(words: Words, v: float, table: CodeTable) -> None:
