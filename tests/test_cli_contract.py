@@ -160,7 +160,8 @@ def test_var_file_is_read_never_written(capsys: pytest.CaptureFixture[str], work
     if command == "canon":
         assert "STRAIGHT_FEED(4.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)" in calls(out)
     else:
-        assert "  extents: X 4.5000 .. 4.5000  Y 0.0000 .. 0.0000  Z 0.0000 .. 0.0000 mm" in out
+        # (the feed starts at the machine origin, X-254 in G54 with X offset 10 inches)
+        assert "  extents: X -254.0000 .. 4.5000  Y 0.0000 .. 0.0000  Z 0.0000 .. 0.0000 mm" in out
 
 
 def test_rs274_writes_the_var_file_back(capsys: pytest.CaptureFixture[str], work: Path) -> None:
@@ -287,7 +288,7 @@ def test_check_json(capsys: pytest.CaptureFixture[str], work: Path) -> None:
         "file": "good.ngc", "ok": True, "lines": 4, "error": None,
         "summary": {"units": "inch", "moves": 2, "traverses": 1, "feeds": 1, "arcs": 0,
                     "rapid_length": 2.0, "feed_length": 1.0, "mixed_units": False,
-                    "extents": {"low": [1.0, 0.0, 0.0], "high": [1.0, 2.0, 0.0]}},
+                    "extents": {"low": [0.0, 0.0, 0.0], "high": [1.0, 2.0, 0.0]}},
     }  # fmt: skip
     assert records[1] == {
         "file": "nope.ngc", "ok": False, "lines": None, "summary": None,

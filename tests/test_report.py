@@ -92,7 +92,23 @@ def test_units_change_converts_the_totals() -> None:
     s = summary_of("G21 F100\nG1 X25.4\nG20\nG1 X2\nM2\n")
     assert (s.units, s.mixed_units) == ("inch", True)
     assert s.feed_length == pytest.approx(2.0)
-    assert box(s) == [1.0, 0.0, 0.0, 2.0, 0.0, 0.0]
+    assert box(s) == [0.0, 0.0, 0.0, 2.0, 0.0, 0.0]  # (the first cut starts at X0)
+
+
+def test_extents_start_where_the_program_takes_the_tool() -> None:
+    """The start position is not in the extents unless a cut starts there: an axis enters them
+    when a move changes it (the first ``G0 Z5`` leaves X and Y out)."""
+    start = "G21 G10 L2 P2 X-120 Y-80\nG55\n"
+    s = summary_of(start + "G0 Z5\nG0 X10 Y10\nG1 Z-1 F100\nG1 X20\nG0 Z5\nM2\n")
+    assert box(s) == [10.0, 10.0, -1.0, 20.0, 10.0, 5.0]
+    # a cut starting with an axis where the program found it: that position counts
+    s = summary_of("G21\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG1 X10\nM2\n")
+    assert box(s) == [0.0, 0.0, -1.0, 10.0, 0.0, 5.0]
+    # rapids only: an axis none changes is where it stayed
+    s = summary_of(start + "G0 Z5\nG0 Z7\nM2\n")
+    assert box(s) == [120.0, 80.0, 5.0, 120.0, 80.0, 7.0]
+    s = summary_of(start + "G0 Z5\nG2 X130 Y80 I5 J0 F100\nM2\n")  # an arc is a cut: its start
+    assert box(s) == [120.0, 80.0, 5.0, 130.0, 85.0, 5.0]  # (clockwise over the top)
 
 
 def test_inch_program_has_no_rounding_noise() -> None:
@@ -104,7 +120,7 @@ def test_work_offset_change_keeps_the_tool_in_place() -> None:
     """After G10 L2 moves the origin by X10, the tool (machine X5) is at program X-5."""
     s = summary_of("G21 F100\nG1 X5\nG10 L2 P1 X10\nG1 X0\nM2\n")
     assert s.feed_length == pytest.approx(5.0 + 5.0)
-    assert box(s) == [0.0, 0.0, 0.0, 5.0, 0.0, 0.0]  # end points only
+    assert box(s) == [0.0, 0.0, 0.0, 5.0, 0.0, 0.0]
 
 
 def test_g92_offset_change() -> None:

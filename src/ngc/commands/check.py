@@ -87,9 +87,11 @@ class Summarizer:
         "_low",
         "_mm_per_unit",
         "_rapid_length",
+        "_stay",
         "_traverses",
         "_units",
         "_units_changed",
+        "_waiting",
         "toolpath",
     )
 
@@ -103,6 +105,11 @@ class Summarizer:
         self._rapid_length = self._feed_length = 0.0
         self._low = [math.inf] * 3
         self._high = [-math.inf] * 3
+        # The axes still where the program found them: such an axis enters the extents when a
+        # move changes it (its end) or a cut starts with it there, not from the start position
+        # alone (a first ``G0 Z5`` does not put the machine origin's X and Y in the extents).
+        self._waiting: tuple[int, ...] = (0, 1, 2)
+        self._stay: Sequence[float] = (0.0, 0.0, 0.0)  # where they are, after the last rapid
 
     # -- the sink protocol ------------------------------------------------------------------------
     def emit(self, op: Op, label: str, line: int) -> None:
@@ -124,11 +131,12 @@ class Summarizer:
     def summary(self) -> Summary:
         """The summary of everything seen so far, in the current units."""
         extents = None
-        if self._low[0] <= self._high[0]:
-            extents = Extents(
-                (self._low[0], self._low[1], self._low[2]),
-                (self._high[0], self._high[1], self._high[2]),
-            )
+        low, high = list(self._low), list(self._high)
+        if self._waiting and self._traverses:  # (an axis no move changed: where it stayed)
+            for i in self._waiting:
+                low[i] = high[i] = self._stay[i]
+        if low[0] <= high[0] and low[1] <= high[1] and low[2] <= high[2]:
+            extents = Extents((low[0], low[1], low[2]), (high[0], high[1], high[2]))
         return Summary(
             units=UNIT_NAMES.get(self._units, self._units),
             traverses=self._traverses,
@@ -150,15 +158,24 @@ class Summarizer:
         if kind is RAPID:
             self._traverses += 1
             self._rapid_length += length
+            if self._waiting:
+                self._arrive(p, q)
+                return
         else:
             self._feeds += 1
             self._feed_length += length
+            if self._waiting:
+                self._waiting = ()
+                self._include(p)
         self._include(q)
 
     def arc(self, arc: ArcMove, line: int) -> None:
         self._arcs += 1
         first, second, axis = self.toolpath.plane
         op, pos = arc.op, arc.prog_start
+        if self._waiting:
+            self._waiting = ()
+            self._include(pos)
         extremes, length = arc_bounds((pos[first], pos[second], pos[axis]),
                                       (op.first_end, op.second_end, op.axis_end_point),
                                       (op.first_axis, op.second_axis), op.rotation)
@@ -192,11 +209,29 @@ class Summarizer:
         if ratio != 1.0:
             self._units_changed |= self._traverses + self._feeds + self._arcs > 0
             self._low = [v * ratio for v in self._low]
+            self._stay = [v * ratio for v in self._stay]
             self._high = [v * ratio for v in self._high]
             self._rapid_length *= ratio
             self._feed_length *= ratio
         self._mm_per_unit = new_mm_per_unit
         self._units = op.units
+
+    def _arrive(self, start: Sequence[float], end: Sequence[float]) -> None:
+        """A rapid while some axes are still where the program found them: those it changes
+        enter the extents from its end; the others wait on."""
+        low, high = self._low, self._high
+        waiting = []
+        for i in range(3):
+            if i in self._waiting and end[i] == start[i]:
+                waiting.append(i)
+                continue
+            v = end[i]
+            if v < low[i]:
+                low[i] = v
+            if v > high[i]:
+                high[i] = v
+        self._waiting = tuple(waiting)
+        self._stay = end
 
     def _include(self, p: Sequence[float]) -> None:
         low, high = self._low, self._high
