@@ -393,7 +393,7 @@ TOP_KEYS = ("units, max_linear_velocity, max_linear_acceleration, servo_period, 
     ("servo_time = 1\n", f"unknown key 'servo_time' (allowed: {TOP_KEYS})"),
     ("[spindle]\nstart = 1\n", "unknown key 'spindle' (allowed: units,"),
     ("[axes.X]\nmax_speed = 1\n",
-     "axes.X: unknown key 'max_speed' (allowed: max_velocity, max_acceleration)"),
+     "axes.X: unknown key 'max_speed' (allowed: max_velocity, max_acceleration, travel)"),
     ("[blending]\narc_blend_enable = true\n",
      "blending: unknown key 'arc_blend_enable' (allowed: enable, fallback_enable, "
      "optimization_depth, gap_cycles, ramp_freq, kink_ratio)"),

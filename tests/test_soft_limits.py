@@ -82,3 +82,77 @@ def test_json(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
 def test_without_limits_nothing_is_said(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     code, out, _ = check(tmp_path, capsys, "G21 G0 X500\nM2\n", "[TRAJ]\nCOORDINATES = X Y Z\n")
     assert code == 0 and "exceeds" not in out
+
+
+SPEEDS = "MAX_VELOCITY = 50\nMAX_ACCELERATION = 500\n"
+PAST = "G21 G0 X500 Y-300 Z-5\nG1 X0 Y0 F100\nM2\n"
+PAST_TEXT = ["  Program exceeds machine maximum on axis X: 410.0000 mm past 90, first at line 1",
+             "  Program exceeds machine minimum on axis Y: 100.0000 mm past -200, first at line 1"]
+
+
+def test_time_holds_the_moves_against_the_travel(tmp_path: Path,
+                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    ini = "".join(f"{line}\n{SPEEDS}" if line.startswith("[AXIS_") else f"{line}\n"
+                  for line in MILL.splitlines())
+    ini_path = write(tmp_path, "mill.ini", ini)
+    path = write(tmp_path, "p.ngc", PAST)
+    code, out, _ = run(capsys, "time", "-j", "1", "-i", ini_path, path)
+    assert code == 1
+    assert out.splitlines()[-2:] == PAST_TEXT
+    assert "X 50 mm/s 500 mm/s^2 travel -10..90" in out
+    code, out, _ = run(capsys, "time", "-j", "1", "--format", "json", "-i", ini_path, path)
+    record = json.loads(out)
+    assert code == 1 and [(e["axis"], e["side"], e["by"], e["line"])
+                          for e in record["soft_limits"]] == [("X", "maximum", 410.0, 1),
+                                                               ("Y", "minimum", 100.0, 1)]
+    assert record["machine"]["axes"]["Z"]["travel"] == [-100.0, 0.0]
+    ok = write(tmp_path, "ok.ngc", "G21 G0 X50 Y-50 Z-5\nM2\n")
+    code, out, _ = run(capsys, "time", "-j", "1", "-i", ini_path, ok)
+    assert code == 0 and "exceeds" not in out
+
+
+def test_plot_draws_and_says_it_goes_past(tmp_path: Path,
+                                          capsys: pytest.CaptureFixture[str]) -> None:
+    ini_path = write(tmp_path, "mill.ini", MILL)  # (no speeds: plot does not time)
+    path = write(tmp_path, "p.ngc", PAST)
+    svg = str(tmp_path / "p.svg")
+    code, _, err = run(capsys, "plot", "-i", ini_path, path, "-o", svg)
+    assert code == 1 and Path(svg).stat().st_size > 0
+    assert err.splitlines() == [f"ngc plot: {path}: {line.strip()}" for line in PAST_TEXT]
+
+
+TRAVEL = """units = "mm"
+[axes.X]
+travel = [0, 300]
+[axes.Z]
+travel = [-150, 0]
+"""
+
+
+@pytest.mark.parametrize("command", ["check", "time", "plot"])
+def test_the_toml_machines_travel(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                  command: str) -> None:
+    toml = write(tmp_path, "m.toml", TRAVEL)
+    path = write(tmp_path, "p.ngc", "G21 G0 X-5 Z10\nG1 X400 F1000\nM2\n")
+    extra = ["-o", str(tmp_path / "p.svg")] if command == "plot" else []
+    code, out, err = run(capsys, command, "--machine", toml, path, *extra)
+    assert code == 1
+    said = [line.strip() for line in (err if command == "plot" else out).splitlines()
+            if "exceeds" in line]
+    assert [line.split(": ", 2)[-1] if command == "plot" else line for line in said] == [
+        "Program exceeds machine minimum on axis X: 5.0000 mm past 0, first at line 1",
+        "Program exceeds machine maximum on axis X: 100.0000 mm past 300, first at line 2",
+        "Program exceeds machine maximum on axis Z: 10.0000 mm past 0, first at line 1"]
+
+
+@pytest.mark.parametrize(("travel", "message"), [
+    ("[0]", "axes.X.travel must be [min, max], not [0]"),
+    ("[5, 1]", "axes.X.travel: the minimum 5 is not below the maximum 1"),
+    ('["a", 1]', "axes.X.travel"),
+])
+def test_a_bad_travel_is_refused(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                 travel: str, message: str) -> None:
+    toml = write(tmp_path, "m.toml", f"[axes.X]\ntravel = {travel}\n")
+    path = write(tmp_path, "p.ngc", "G0 X1\nM2\n")
+    code, _, err = run(capsys, "check", "--machine", toml, path)
+    assert code == 2 and message in err

@@ -158,6 +158,9 @@ def build_parser() -> argparse.ArgumentParser:
         epilog=PROGRAM_HELP,
     )
     check.add_argument("files", metavar="FILE", nargs="+", help="programs (- for standard input)")
+    check.add_argument("--machine", metavar="TOML", dest="machine_file",
+                       help="ngc's TOML machine file, over -i's machine: its axes' travel is "
+                       "held against the moves (docs/machine.md)")
     _add_jobs(check)
     check.add_argument(
         "--format",
@@ -199,7 +202,8 @@ def _add_plot(sub: argparse._SubParsersAction[argparse.ArgumentParser],
                       help="time the program on the machine (as ngc time) and print the cycle "
                       "time on the drawing")
     plot.add_argument("--machine", metavar="TOML", dest="machine_file",
-                      help="with --time: ngc's TOML machine file, over the default machine")
+                      help="ngc's TOML machine file, over the default machine or -i's: its "
+                      "axes' travel is held against the moves, and --time times on it")
 
 
 VIEW_NAMES = ("top", "front", "side", "iso", "lathe")
@@ -266,11 +270,17 @@ def _machine_options() -> argparse.ArgumentParser:
     parent = argparse.ArgumentParser(add_help=False)
     group = parent.add_argument_group("machine inputs")
     group.add_argument("-i", metavar="INI", dest="ini_file",
-                       help="apply the INI file's [RS274NGC] settings (subroutine path, "
-                       "Fanuc-style programs, #<_ini[SECTION]NAME> parameters)")
+                       help="the machine's INI file: its [RS274NGC] settings (subroutine path, "
+                       "Fanuc-style programs, #<_ini[SECTION]NAME> parameters), its units "
+                       "([TRAJ]LINEAR_UNITS: the tool table's and offsets'), PROGRAM_PREFIX "
+                       "and SUBROUTINE_PATH from the INI file's folder, its soft limits")
     group.add_argument("-t", metavar="TOOLS", dest="tool_table",
                        help="the tool table, in LinuxCNC's format (T P X Y Z A B C U V W D I J Q "
-                       ";comment, inches); default: rs274's sample table (tools 1, 2, 3, 99999)")
+                       ";comment), in the machine's units (inches without -i); default: rs274's "
+                       "sample table (tools 1, 2, 3, 99999)")
+    group.add_argument("--any-tool", action="store_true",
+                       help="take a tool the table does not have as a tool with no offsets and "
+                       "no diameter, with a warning (default: LinuxCNC's error)")
     group.add_argument("-v", metavar="VARS", dest="var_file",
                        help="read the parameter file (only ngc rs274 writes it back)")
     group.add_argument("--probe", metavar="FILE", dest="probe_file",

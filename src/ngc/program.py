@@ -51,13 +51,14 @@ class Program:
         ``"linuxcnc"`` or ``"engine"`` (None: the one the program's first line names).  The
         inputs are checked now (:class:`~ngc.errors.NgcConfigError` names a bad one); the
         program runs when asked something."""
+        is_file = isinstance(source, os.PathLike) or (
+            "\n" not in source and "\r" not in source and os.path.isfile(source))
         options = MachineOptions(ini_file=ini, tool_table=tools, var_file=vars,
-                                 probe_file=probe)
+                                 probe_file=probe,
+                                 program_file=os.fspath(source) if is_file else None)
         if max_iterations is not None:
             options = options._replace(max_iterations=max_iterations)
         load_setup(options)
-        is_file = isinstance(source, os.PathLike) or (
-            "\n" not in source and "\r" not in source and os.path.isfile(source))
         if is_file:
             path = os.fspath(source)
             found = dialects.checked(dialect) or dialects.of_file(path)

@@ -65,7 +65,7 @@ def _canon_engine(options: argparse.Namespace, program: OpenedProgram) -> int:
 
 def _canon_linuxcnc(options: argparse.Namespace, program: OpenedProgram) -> int:
     try:
-        machine, setup = load_inputs("canon", options)
+        machine, setup = load_inputs("canon", options, options.file)
     except NgcConfigError as exc:
         sys.stderr.write(f"ngc canon: {exc.message}\n")
         return EXIT_USAGE

@@ -22,9 +22,10 @@ from ..errors import NgcError
 from ..interp.interpreter import Interpreter
 from ..interp.source import ProgramReader, open_text_program
 from ..toolpath.frame import Pos
+from ..toolpath.limits import Excess, LimitWatch
 from ..toolpath.tracker import RAPID, ArcMove, Cubics, Tee, Toolpath
 from .check_common import error_record, headline
-from .limits import Excess, LimitWatch
+from .common import defined_names
 
 if TYPE_CHECKING:
     from ..engine import Setup as EngineSetup
@@ -408,8 +409,7 @@ def check_lines(
     summary = summarizer.summary()
     defined: tuple[str, ...] = ()
     if error is None and summary.moves == 0:
-        defined = tuple(f"o{label}" if label.isdigit() else f"o<{label}>"
-                        for label in interp.flow.subs)
+        defined = defined_names(interp)
     return CheckResult(path=name, lines=counted.total(), summary=summary,
                        error=error, limits=() if watch is None else tuple(watch.excesses()),
                        machine_units=machine_units, subroutines=defined,

@@ -19,6 +19,7 @@ from .common import (
     EXIT_PROGRAM_ERROR,
     EXIT_USAGE,
     OpenedProgram,
+    any_tool_warning,
     cannot_open,
     each_file,
     engine_setup,
@@ -48,7 +49,11 @@ def run(options: argparse.Namespace) -> int:
         return EXIT_USAGE
     try:  # (read once here, for their messages and warnings; each file reads them again)
         if options.dialect != ENGINE:
-            load_inputs("check", options)
+            _, setup = load_inputs("check", options)
+            if options.machine_file is not None:
+                from ..planner.config import machine_travel
+
+                machine_travel(setup.ini, options.machine_file)
         engine_setup(options)
     except NgcConfigError as exc:
         sys.stderr.write(f"ngc check: {exc.message}\n")
@@ -75,17 +80,19 @@ def _check_file(options: argparse.Namespace, path: str) -> int:
     else:
         inputs = MachineOptions(ini_file=options.ini_file, tool_table=options.tool_table,
                                 var_file=options.var_file, max_iterations=options.max_iterations,
-                                probe_file=options.probe_file)
+                                probe_file=options.probe_file,
+                                program_file=None if path == "-" else path,
+                                unknown_tool=any_tool_warning("check", options))
         setup = load_setup(inputs)
 
         def quiet(sink: Sink) -> Interpreter:
             return new_interpreter(sink, inputs, setup, write_files=False)
 
         limits, units = None, "mm"
-        if setup.ini is not None:  # (-i: the machine's soft limits, in its units)
-            from ..planner.config import ini_linear_units, soft_limits
+        if setup.ini is not None or options.machine_file is not None:
+            from ..planner.config import machine_travel  # (the machine's soft limits, its units)
 
-            limits, units = soft_limits(setup.ini), ini_linear_units(setup.ini)
+            limits, units = machine_travel(setup.ini, options.machine_file)
         handle = text_reader(program.handle)
         with handle, progress_of(program.name, handle, output_to_terminal=False) as progress:
             result = report.check_lines(progress.lines(handle), program.name, quiet,

@@ -20,6 +20,7 @@ from ..progress import Progress, descriptor, is_terminal
 
 if TYPE_CHECKING:
     from ..engine import Setup as EngineSetup
+    from ..interp.interpreter import Interpreter
 
 EXIT_OK = 0
 EXIT_PROGRAM_ERROR = 1
@@ -29,16 +30,65 @@ SINKS: dict[str, Callable[[TextIO], Sink]] = {"text": TextSink, "json": JsonSink
 STDIN_NAME = "<stdin>"  # how a program read from standard input (``-``) is named
 
 
-def load_inputs(command: str, options: argparse.Namespace) -> tuple[MachineOptions, Setup]:
+def load_inputs(command: str, options: argparse.Namespace,
+                program: str | None = None) -> tuple[MachineOptions, Setup]:
     """The machine inputs of the command line, loaded; raises :class:`NgcConfigError`.  What
-    rs274 would report about the INI file's settings is printed as a warning."""
+    rs274 would report about the INI file's settings is printed as a warning.  ``program`` is
+    the program file's path (``-``: standard input), whose folder is searched for subroutine
+    files."""
     machine = MachineOptions(ini_file=options.ini_file, tool_table=options.tool_table,
                              var_file=options.var_file, max_iterations=options.max_iterations,
-                             probe_file=options.probe_file)
+                             probe_file=options.probe_file,
+                             program_file=None if program == "-" else program,
+                             unknown_tool=any_tool_warning(command, options))
     setup = load_setup(machine)
     for message in setup.settings.messages:
         sys.stderr.write(f"ngc {command}: warning: {message}\n")
     return machine, setup
+
+
+def any_tool_warning(command: str, options: argparse.Namespace) -> Callable[[int], None] | None:
+    """With ``--any-tool``, what tells of a tool the table lacks, taken as one with no offsets."""
+    if not getattr(options, "any_tool", False):
+        return None
+
+    def warn(number: int) -> None:
+        sys.stderr.write(f"ngc {command}: warning: tool {number} is not in the tool table: taken "
+                         "as a tool with no offsets and no diameter (--any-tool)\n")
+    return warn
+
+
+class Recorded:
+    """An interpreter factory (``new_interpreter(sink)``) that keeps the interpreter it made, to
+    ask it after the run what the program defined."""
+
+    def __init__(self, make: Callable[[Sink], Interpreter]) -> None:
+        self.make = make
+        self.made: Interpreter | None = None
+
+    def __call__(self, sink: Sink) -> Interpreter:
+        self.made = self.make(sink)
+        return self.made
+
+    def subroutines(self) -> tuple[str, ...]:
+        """The subroutines the program defined, as it names them (``o<name>``, ``o100``)."""
+        if self.made is None:
+            return ()
+        return defined_names(self.made)
+
+
+def defined_names(interp: Interpreter) -> tuple[str, ...]:
+    """The subroutines a run defined, as a program names them (``o<name>``, ``o100``)."""
+    return tuple(f"o{label}" if label.isdigit() else f"o<{label}>" for label in interp.flow.subs)
+
+
+def warn_only_defines(command: str, name: str, subroutines: tuple[str, ...]) -> None:
+    """The warning for a program that moved nothing and defined subroutines: a subroutine file
+    run on its own."""
+    if subroutines:
+        sys.stderr.write(f"ngc {command}: warning: {name} moves nothing: it defines "
+                         f"{', '.join(subroutines)} (a subroutine file is run through a program "
+                         "that calls it)\n")
 
 
 def open_binary(path: str) -> io.BufferedReader:

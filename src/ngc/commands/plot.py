@@ -12,7 +12,7 @@ from __future__ import annotations
 import os
 import re
 import tempfile
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Mapping
 from typing import TYPE_CHECKING, NamedTuple
 
 from .. import dialects
@@ -24,6 +24,7 @@ from ..interp.source import ProgramReader
 from ..render import svg
 from ..render.png import svg_to_png
 from ..render.scene import VIEWS, Scene
+from ..toolpath.limits import Excess, LimitWatch
 from ..toolpath.tracker import Tee, Toolpath
 
 if TYPE_CHECKING:
@@ -68,6 +69,8 @@ class PlotResult(NamedTuple):
     length: float
     error: NgcError | None
     time_s: float | None = None
+    limits: tuple[Excess, ...] = ()  # where the moves go past the machine's travel
+    units: str = "mm"  # the limits'
 
 
 class PlotOptions(NamedTuple):
@@ -93,27 +96,38 @@ def output_format(path: str) -> str:
 
 def draw(lines: Iterable[str], name: str, output: str,
          new_interpreter: Callable[[Sink], Interpreter], options: PlotOptions | None = None, *,
-         reader: ProgramReader | None = None, machine: PlannerMachine | None = None
-         ) -> PlotResult:
+         reader: ProgramReader | None = None, machine: PlannerMachine | None = None,
+         travel: Mapping[str, tuple[float, float]] | None = None,
+         units: str = "mm") -> PlotResult:
     """Run the program ``lines`` (named ``name`` in errors and on the drawing) through
     ``new_interpreter(sink)`` and draw it to ``output`` (``.svg`` or ``.png``); with a
-    ``machine``, time it on that machine in the same run and print the cycle time on it."""
+    ``machine``, time it on that machine in the same run and print the cycle time on it.  With a
+    ``travel`` (the machine's soft limits, in ``units``; the ``machine``'s units if given), the
+    moves that go past it are in :attr:`PlotResult.limits`."""
     output_format(output)  # (refused before the program runs)
     options = PlotOptions() if options is None else options
     if options.view not in VIEWS:
         raise ValueError(f"the view must be one of {', '.join(VIEWS)}, not {options.view!r}")
     view = VIEWS[options.view]
     timer: Timer | None = None
-    if machine is None:
+    watch: LimitWatch | None = None
+    if machine is None and not travel:
         scene = Scene(view, color=options.color, approach=options.approach)
     else:
-        from ..planner.timing import Timer  # (loaded for --time only)
-
         tee = Tee()
-        toolpath = Toolpath(tee, inch_machine=machine.linear_units == "inch")
+        if machine is not None:
+            units = machine.linear_units
+        toolpath = Toolpath(tee, inch_machine=units == "inch")
         scene = Scene(view, color=options.color, approach=options.approach, toolpath=toolpath)
-        timer = Timer(machine, toolpath=toolpath)
-        tee.readers.extend((scene, timer.path))
+        tee.readers.append(scene)
+        if machine is not None:
+            from ..planner.timing import Timer  # (loaded for --time only)
+
+            timer = Timer(machine, toolpath=toolpath)
+            tee.readers.append(timer.path)
+        if travel:
+            watch = LimitWatch(travel, toolpath)
+            tee.readers.append(watch)
     interp = new_interpreter(scene.toolpath)
     error: NgcError | None = None
     time_s: float | None = None
@@ -125,8 +139,10 @@ def draw(lines: Iterable[str], name: str, output: str,
     except NgcError as exc:
         error = exc
         scene.stop_at()
-    return _write(scene, name, output, options, error, time_s,
-                  diameter=interp.machine.state.lathe_diameter)
+    result = _write(scene, name, output, options, error, time_s,
+                    diameter=interp.machine.state.lathe_diameter)
+    return result if watch is None else result._replace(limits=tuple(watch.excesses()),
+                                                        units=units)
 
 
 def draw_engine(text: str, name: str, output: str, options: PlotOptions | None = None, *,

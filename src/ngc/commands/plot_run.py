@@ -16,6 +16,7 @@ from .common import (
     EXIT_PROGRAM_ERROR,
     EXIT_USAGE,
     OpenedProgram,
+    Recorded,
     cannot_open,
     display_name,
     engine_setup,
@@ -23,6 +24,7 @@ from .common import (
     load_inputs,
     open_marked,
     progress_of,
+    warn_only_defines,
 )
 
 if TYPE_CHECKING:
@@ -50,12 +52,18 @@ def run(options: argparse.Namespace) -> int:
         if program.dialect == ENGINE:
             return _plot_engine(options, program)
         try:
-            inputs, setup = load_inputs("plot", options)
+            inputs, setup = load_inputs("plot", options, options.file)
             machine = None
+            travel, units = None, "mm"
             if options.time:
                 from ..planner.config import load_machine
 
                 machine = load_machine(setup.ini, options.machine_file)
+                travel, units = machine.travel, machine.linear_units
+            elif setup.ini is not None or options.machine_file is not None:
+                from ..planner.config import machine_travel
+
+                travel, units = machine_travel(setup.ini, options.machine_file)
         except NgcConfigError as exc:
             sys.stderr.write(f"ngc plot: {exc.message}\n")
             return EXIT_USAGE
@@ -67,10 +75,11 @@ def run(options: argparse.Namespace) -> int:
         handle = text_reader(program.handle)
         try:
             with handle, progress_of(program.name, handle, output_to_terminal=False) as progress:
+                interpreter = Recorded(lambda sink: new_interpreter(sink, inputs, setup,
+                                                                    write_files=False))
                 result = plot.draw(progress.lines(handle), program.name, options.output,
-                                   lambda sink: new_interpreter(sink, inputs, setup,
-                                                                write_files=False),
-                                   how, reader=handle, machine=machine)
+                                   interpreter, how, reader=handle,
+                                   machine=machine, travel=travel, units=units)
         except NgcConfigError as exc:
             sys.stderr.write(f"ngc plot: {exc.message}\n")
             return EXIT_USAGE
@@ -83,7 +92,11 @@ def run(options: argparse.Namespace) -> int:
     if result.error is not None:
         sys.stderr.write(result.error.render() + "\n")
         return EXIT_PROGRAM_ERROR
-    return EXIT_OK
+    if result.length == 0.0:
+        warn_only_defines("plot", program.name, interpreter.subroutines())
+    for excess in result.limits:  # (drawn all the same; not a program the machine can run)
+        sys.stderr.write(f"ngc plot: {program.name}: {excess.text(result.units)}\n")
+    return EXIT_PROGRAM_ERROR if result.limits else EXIT_OK
 
 
 def _plot_options(options: argparse.Namespace, view: str) -> PlotOptions:

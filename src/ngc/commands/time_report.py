@@ -96,6 +96,7 @@ def render(name: str, result: TimeResult, machine: Machine, top: int = 10,
         for line, seconds in rows:
             text = _cut((sources or {}).get(line, ""))
             lines.append(f"    line {line:>{width}} {seconds:10.3f} s  {text}".rstrip())
+    lines.extend(f"  {excess.text(units)}" for excess in result.limits)
     return "\n".join(lines)
 
 
@@ -138,8 +139,8 @@ def machine_text(machine: Machine) -> str:
 
 
 def axes_text(machine: Machine) -> str:
-    """The machine's axes in one line: each one's speed and acceleration limits, and the cap on
-    every move's speed, if any.
+    """The machine's axes in one line: each one's speed and acceleration limits and its travel
+    (if known), and the cap on every move's speed, if any.
 
     >>> axes_text(Machine())
     'X 200 mm/s 1000 mm/s^2, Y 200 mm/s 1000 mm/s^2, Z 100 mm/s 500 mm/s^2'
@@ -148,8 +149,10 @@ def axes_text(machine: Machine) -> str:
     parts = []
     for axis, limits in machine.axes.items():
         unit = "deg" if axis in ANGULAR_AXES else units
+        travel = machine.travel.get(axis)
+        span = "" if travel is None else f" travel {travel[0]:g}..{travel[1]:g}"
         parts.append(f"{axis} {limits.max_velocity:g} {unit}/s {limits.max_acceleration:g} "
-                     f"{unit}/s^2")
+                     f"{unit}/s^2{span}")
     if machine.max_linear_velocity is not None:
         parts.append(f"max linear velocity {machine.max_linear_velocity:g} {units}/s")
     return ", ".join(parts) or "none"
@@ -174,6 +177,8 @@ def record(name: str, result: TimeResult, machine: Machine, top: int = 10,
         "length": _round(result.length),
         "units": machine.linear_units,
         "machine": machine_record(machine),
+        "soft_limits": [{"axis": e.axis, "side": e.side, "limit": e.limit, "by": _round(e.by),
+                         "line": e.line, "units": machine.linear_units} for e in result.limits],
     }
 
 
@@ -205,9 +210,13 @@ def _number(value: float) -> str:
 def machine_record(machine: Machine) -> dict[str, object]:
     """The machine a program was timed on, as JSON: units, axes limits, speed cap, servo period
     and the times of tool changes and spindle starts and stops."""
-    axes = {axis: {"max_velocity": limits.max_velocity,
-                   "max_acceleration": limits.max_acceleration}
-            for axis, limits in machine.axes.items()}
+    axes: dict[str, dict[str, object]] = {
+        axis: {"max_velocity": limits.max_velocity, "max_acceleration": limits.max_acceleration}
+        for axis, limits in machine.axes.items()}
+    for axis, (low, high) in machine.travel.items():
+        if axis in axes:  # (JSON has no infinity: an open side is null)
+            axes[axis]["travel"] = [low if math.isfinite(low) else None,
+                                    high if math.isfinite(high) else None]
     return {"units": machine.linear_units, "axes": axes,
             "max_linear_velocity": machine.max_linear_velocity,
             "servo_period": machine.servo_period,

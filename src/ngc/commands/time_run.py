@@ -19,12 +19,14 @@ from .common import (
     EXIT_USAGE,
     NOT_LINUXCNC,
     OpenedProgram,
+    Recorded,
     cannot_open,
     display_name,
     each_file,
     load_inputs,
     open_marked,
     progress_of,
+    warn_only_defines,
 )
 
 if TYPE_CHECKING:
@@ -66,7 +68,7 @@ def _time_linuxcnc(options: argparse.Namespace, program: OpenedProgram, path: st
     from . import time_report  # loaded on use, as the planner is
 
     try:
-        inputs, setup = load_inputs("time", options)
+        inputs, setup = load_inputs("time", options, path)
         machine = load_machine(setup.ini, options.machine_file)
     except NgcConfigError as exc:
         sys.stderr.write(f"ngc time: {exc.message}\n")
@@ -79,10 +81,14 @@ def _time_linuxcnc(options: argparse.Namespace, program: OpenedProgram, path: st
         sys.stderr.write(f"ngc time: cannot write {display_name(options.trajectory)}: {exc.strerror}\n")
         return EXIT_USAGE
     try:
-        result = _time_program(options, program, machine,
-                               lambda sink: new_interpreter(sink, inputs, setup, write_files=False),
-                               csv)
+        interpreter = Recorded(lambda sink: new_interpreter(sink, inputs, setup,
+                                                            write_files=False))
+        result = _time_program(options, program, machine, interpreter, csv)
         _print_time(options, program.name, result, machine, path)
+        if result.segments == 0:
+            warn_only_defines("time", program.name, interpreter.subroutines())
+        if result.limits:  # (past the machine's travel: not a program it can run)
+            return EXIT_PROGRAM_ERROR
         if csv is not None:
             csv.commit()  # the trajectory takes its name once everything else has gone well
     except NgcError as exc:

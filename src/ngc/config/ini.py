@@ -376,6 +376,17 @@ def _search_dirs(value: str | None, cwd: str, limit: int) -> tuple[str, ...]:
     return tuple(dirs)
 
 
+def _folder(value: str | None, cwd: str) -> str | None:
+    """A folder named in the INI file (``~`` expanded, relative to ``cwd``), if it is one."""
+    if not value:
+        return None
+    try:
+        path = os.path.realpath(os.path.join(cwd, os.path.expanduser(value)), strict=True)
+    except (OSError, ValueError):
+        return None
+    return path if os.path.isdir(path) else None
+
+
 def _switch(ini: Ini, section: str, name: str) -> bool:
     """An integer option that is on when non-zero; not an integer (``yes``, ``0x1``, ``1.0``): off."""
     return bool(parse_int(ini.get(section, name)))
@@ -422,7 +433,11 @@ class Rs274ngcSettings(NamedTuple):
     """[RS274NGC]SUBROUTINE_PATH: ``:``-separated; relative to the current directory; entries that
     do not exist are dropped and at most 10 existing directories are searched."""
     program_prefix: str | None = None
-    """[DISPLAY]PROGRAM_PREFIX, as written (rs274 looks it up)."""
+    """[DISPLAY]PROGRAM_PREFIX, as written."""
+    program_prefix_dir: str | None = None
+    """The folder PROGRAM_PREFIX names (``~`` expanded, relative to the current directory), if
+    it is one: searched for subroutine files after the current directory and before
+    SUBROUTINE_PATH, as rs274 does."""
     orient_offset: float = 0.0
     """[RS274NGC]ORIENT_OFFSET, added to M19 R; a value that is not a real number reads as 0."""
     center_arc_radius_tolerance_inch: float = CENTER_ARC_RADIUS_TOLERANCE_INCH
@@ -514,6 +529,7 @@ class Rs274ngcSettings(NamedTuple):
                 ini.get("RS274NGC", "SUBROUTINE_PATH"), cwd, SUBROUTINE_PATH_MAX_DIRS
             ),
             program_prefix=_string(ini, "DISPLAY", "PROGRAM_PREFIX"),
+            program_prefix_dir=_folder(_string(ini, "DISPLAY", "PROGRAM_PREFIX"), cwd),
             orient_offset=_real(ini, "ORIENT_OFFSET", 0.0),
             center_arc_radius_tolerance_inch=inch,
             center_arc_radius_tolerance_mm=mm,

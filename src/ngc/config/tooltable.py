@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from typing import NamedTuple
 
 from ..errors import NgcConfigError
@@ -55,6 +56,8 @@ class ToolEntry(NamedTuple):
     comment: str = ""
 
 
+_ROTARY = frozenset((3, 4, 5))  # A B C in the offsets X Y Z A B C U V W: degrees
+
 # The slot of a line that starts with a tool number and is skipped: no tool is found there.
 UNREAD = ToolEntry(-1, -1)
 # The spindle's entry when no tool was ever loaded.
@@ -76,6 +79,20 @@ class ToolTable(NamedTuple):
             if entry.number == number and number >= 0:
                 return entry
         return None
+
+    def scaled(self, factor: float) -> ToolTable:
+        """The table with its lengths and diameters times ``factor`` (a table in mm read into
+        the interpreter's inches: ``1 / 25.4``); angles and rotary offsets (A B C) are kept."""
+        if factor == 1.0:
+            return self
+
+        def scale(entry: ToolEntry) -> ToolEntry:
+            offsets = tuple(v if i in _ROTARY else v * factor for i, v in enumerate(entry.offsets))
+            return entry._replace(offsets=offsets, diameter=entry.diameter * factor)
+
+        spindle = None if self.spindle is None else scale(self.spindle)
+        return self._replace(entries=tuple(scale(e) if e is not UNREAD else e
+                                           for e in self.entries), spindle=spindle)
 
     def skipped_report(self, name: str) -> str:
         """What rs274 prints on stdout for the skipped lines of file ``name``."""
@@ -176,11 +193,15 @@ class Tools:
     line without a P word, if any), slots 1..n the table's entries in file order (G10
     L1/L10/L11 replace them)."""
 
-    __slots__ = ("slots", "spindle_pocket")
+    __slots__ = ("slots", "spindle_pocket", "unknown")
 
-    def __init__(self, table: ToolTable = DEFAULT_TABLE) -> None:
+    def __init__(self, table: ToolTable = DEFAULT_TABLE,
+                 unknown: Callable[[int], None] | None = None) -> None:
         spindle = EMPTY_SPINDLE if table.spindle is None else table.spindle
         self.slots: list[ToolEntry] = [spindle, *table.entries]
+        # Given (--any-tool): a tool the table lacks is added as one with no offsets, in the
+        # pocket of its number, and told to ``unknown``; else it is not found (LinuxCNC's error).
+        self.unknown = unknown
         # The pocket of slot 0 in the canon's copy of the table: G10 L1 gives the spindle's
         # entry a tool's data and pocket, the canon's copy only the data; M6 copies a slot
         # whole.  rs274 reads the canon's copy back after M6 and M61 (:meth:`reload`).
@@ -208,7 +229,13 @@ class Tools:
         for i in range(1, len(self.slots)):
             if self.slots[i].number == number:
                 return i
-        return 0 if self.slots[0].number == number else None
+        if self.slots[0].number == number:
+            return 0
+        if self.unknown is None or number == 0:
+            return None
+        self.slots.append(ToolEntry(number, number))
+        self.unknown(number)
+        return len(self.slots) - 1
 
     def pocket(self, index: int) -> int:
         """The pocket of the entry in slot ``index`` (-1 for no such slot), as rs274 reads it."""

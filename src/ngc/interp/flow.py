@@ -289,7 +289,8 @@ class Flow:
         self.frames: list[Frame] = []
         self.tape: Body | None = None
         self.opened: list[ProgramReader] = []
-        self.subroutine_path: list[str] = []
+        # The folders a subroutine file is looked for in, in order ("." is the current one).
+        self.search_path: list[str] = ["."]
         self.fanuc_enabled = True
         self.max_iterations = DEFAULT_MAX_ITERATIONS
         self.max_call_depth = MAX_CALL_DEPTH
@@ -318,7 +319,7 @@ class Flow:
         """A flow for a program about to run: these settings, nothing of a program run before
         (its subroutines, labels, loop counts, work done)."""
         flow = Flow(self.interp)
-        flow.subroutine_path = self.subroutine_path
+        flow.search_path = self.search_path
         flow.fanuc_enabled = self.fanuc_enabled
         flow.max_iterations = self.max_iterations
         flow.max_call_depth = self.max_call_depth
@@ -846,7 +847,9 @@ class Flow:
         return sub
 
     def sub_file(self, label: str) -> str | None:
-        """``<label>.ngc`` in the working directory or a folder of the subroutine path.
+        """``<label>.ngc`` in the first folder of the search path that has it: as rs274, the
+        working directory, PROGRAM_PREFIX, then SUBROUTINE_PATH (:meth:`Interpreter.configure`;
+        ngc's other commands search as a machine does, :func:`ngc.options.new_interpreter`).
 
         A name is a path inside those folders: one that is absolute or climbs out of them
         (``o<../x> call``) is refused, so program text reads no file elsewhere.
@@ -857,7 +860,7 @@ class Flow:
             raise NgcSemanticError(
                 f"Subroutine file '{shown}' is outside the working directory and the subroutine "
                 "path")
-        for folder in (".", *self.subroutine_path):
+        for folder in self.search_path:
             if os.path.isfile(name if folder == "." else os.path.join(folder, name)):
                 return shown if folder == "." else os.path.join(folder, shown)
         return None

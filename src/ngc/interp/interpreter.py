@@ -138,7 +138,9 @@ class Interpreter:
     # -- program ------------------------------------------------------------------------------
     def configure(self, settings: Rs274ngcSettings, ini: Ini | None = None) -> None:
         """Apply INI settings: the subroutine path, Fanuc-style programs, ``#<_ini[...]...>``."""
-        self.flow.subroutine_path = list(settings.subroutine_path)
+        prefix = settings.program_prefix_dir
+        self.flow.search_path = [".", *(() if prefix is None else (prefix,)),
+                                 *settings.subroutine_path]
         self.flow.fanuc_enabled = not settings.disable_fanuc_style_sub
         self.params.ini = ini if settings.ini_vars else None
         self.state.orient_offset = settings.orient_offset

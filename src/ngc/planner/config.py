@@ -19,6 +19,8 @@ from typing import Any, NamedTuple, TypeVar
 
 from ..config.ini import BLANKS, Ini, parse_int, parse_real
 from ..config.tomlfile import read_toml
+from ..config.units import UNITS_EXPECTED, linear_units
+from ..config.units import read_linear_units as _linear_units
 from ..errors import NgcConfigError
 from .machine import ALL_AXES, DEFAULT_MACHINE, MAX_COORDINATE, AxisLimits, Machine
 
@@ -26,12 +28,6 @@ __all__ = ["load_machine", "machine_from_ini", "machine_from_toml"]
 
 T = TypeVar("T")
 
-# [TRAJ]LINEAR_UNITS (ini-config.adoc, [TRAJ] Section: "mm or inch").  Besides the names, a number
-# is read as machine units per millimetre, the form of older configurations: 1.0 is mm, 0.03937
-# (1/25.4, written with as many digits as one likes) is inch.
-UNIT_NAMES = {"mm": "mm", "metric": "mm", "inch": "inch", "in": "inch", "imperial": "inch"}
-UNITS_PER_MM = {"mm": 1.0, "inch": 1.0 / 25.4}
-UNITS_PER_MM_TOLERANCE = 1e-4  # relative: 0.03937 and 0.0393700787 are both inch
 NANOSECONDS_PER_SECOND = 1e9  # [EMCMOT]SERVO_PERIOD is in ns
 # Boolean INI values (ini-config.adoc, "INI File Components": case-insensitive words).
 INI_BOOLEANS = {"1": True, "TRUE": True, "YES": True, "ON": True,
@@ -113,21 +109,6 @@ def _nanoseconds(text: str) -> float | None:
 
 def _boolean(text: str) -> bool | None:
     return INI_BOOLEANS.get(text.strip(BLANKS).upper())
-
-
-def _linear_units(text: str) -> str | None:
-    name = UNIT_NAMES.get(text.strip(BLANKS).lower())
-    if name is not None:
-        return name
-    per_mm = parse_real(text)
-    for unit, expected in UNITS_PER_MM.items():
-        if per_mm is not None and math.isclose(per_mm, expected, rel_tol=UNITS_PER_MM_TOLERANCE):
-            return unit
-    return None
-
-
-UNITS_EXPECTED = ("mm, inch (or in, metric, imperial) or the machine units per mm "
-                  "(1.0 for mm, 0.03937 for inch)")
 
 
 class IniKey(NamedTuple):
@@ -267,7 +248,7 @@ def machine_from_ini(ini: Ini) -> Machine:
     ({'X': AxisLimits(max_velocity=4.0, max_acceleration=30.0), \
 'Z': AxisLimits(max_velocity=2.0, max_acceleration=20.0)}, 'inch', 0.0005)
     """
-    fields: dict[str, Any] = {"axes": _ini_axes(ini)}
+    fields: dict[str, Any] = {"axes": _ini_axes(ini), "travel": soft_limits(ini)}
     for name, spec in INI_FIELDS.items():
         value = _ini_value(ini, *spec)
         if value is not None:
@@ -334,7 +315,8 @@ TOML_BLENDING: Mapping[str, tuple[str, Check]] = MappingProxyType({
     "ramp_freq": ("arc_blend_ramp_freq", _ranged(RAMP_FREQ)),
     "kink_ratio": ("arc_blend_kink_ratio", _ranged(KINK_RATIO)),
 })
-TOML_AXIS_KEYS = ("max_velocity", "max_acceleration")
+TOML_AXIS_KEYS = ("max_velocity", "max_acceleration", "travel")
+TOML_AXIS_LIMITS = ("max_velocity", "max_acceleration")
 
 
 def _unknown(where: str, key: str, allowed: tuple[str, ...] | Mapping[str, object]) -> ValueError:
@@ -373,15 +355,35 @@ def _toml_axis(name: str, entry: object, base: AxisLimits | None) -> AxisLimits:
     for key, value in _table(entry, where).items():
         if key not in TOML_AXIS_KEYS:
             raise _unknown(where, key, TOML_AXIS_KEYS)
-        given[key] = _number(value, f"{where}.{key}", RANGES[key])
-    if base is None and len(given) < len(TOML_AXIS_KEYS):
-        missing = ", ".join(key for key in TOML_AXIS_KEYS if key not in given)
+        if key != "travel":  # (read by _travel)
+            given[key] = _number(value, f"{where}.{key}", RANGES[key])
+    if base is None and len(given) < len(TOML_AXIS_LIMITS):
+        missing = ", ".join(key for key in TOML_AXIS_LIMITS if key not in given)
         raise ValueError(f"{where}: a new axis needs max_velocity and max_acceleration "
                          f"(missing: {missing})")
     if base is not None:
         given = {"max_velocity": base.max_velocity, "max_acceleration": base.max_acceleration,
                  **given}
     return AxisLimits(given["max_velocity"], given["max_acceleration"])
+
+
+def _travel(data: Mapping[str, object], base: Mapping[str, tuple[float, float]],
+            axes: Mapping[str, AxisLimits]) -> dict[str, tuple[float, float]]:
+    """The axes' travel: ``base``'s (for axes that stay), with ``[axes.<letter>] travel = [min,
+    max]`` over it."""
+    travel = {axis: limits for axis, limits in base.items() if axis in axes}
+    for name, entry in _table(data.get("axes", {}), "axes").items():
+        if not isinstance(entry, dict) or "travel" not in entry:
+            continue
+        where = f"axes.{name}.travel"
+        value = entry["travel"]
+        if not isinstance(value, list) or len(value) != 2:
+            raise ValueError(f"{where} must be [min, max], not {value!r}")
+        low, high = (_number(v, where, POSITION) for v in value)
+        if not low < high:
+            raise ValueError(f"{where}: the minimum {low:g} is not below the maximum {high:g}")
+        travel[name] = (low, high)
+    return {axis: travel[axis] for axis in ALL_AXES if axis in travel}
 
 
 def _coordinates(value: object) -> str:
@@ -436,8 +438,9 @@ def _machine_from_data(data: Mapping[str, object], base: Machine) -> Machine:
     fields.update(_fields(_table(data.get("blending", {}), "blending"), "blending", TOML_BLENDING))
     axes = _toml_axes(data, base.axes)
     start = _start(data.get("start", {}), base.start_position, axes)
+    travel = _travel(data, base.travel, axes)
     return replace(base, axes=MappingProxyType(axes), start_position=MappingProxyType(start),
-                   **fields)
+                   travel=MappingProxyType(travel), **fields)
 
 
 def machine_from_toml(path: str, base: Machine = DEFAULT_MACHINE) -> Machine:
@@ -463,6 +466,19 @@ def load_machine(ini: Ini | None, toml_path: str | None) -> Machine:
     """
     machine = DEFAULT_MACHINE if ini is None else machine_from_ini(ini)
     return machine if toml_path is None else machine_from_toml(toml_path, machine)
+
+
+def machine_travel(ini: Ini | None, toml_path: str | None) -> tuple[SoftLimits, str]:
+    """The travel of the machine the INI and TOML files describe, and its units, for the
+    commands that hold the moves against it without timing them (``check``, ``plot``): the INI
+    file's soft limits and units, the TOML file's ``travel`` and ``units`` over them.  Unlike
+    :func:`load_machine`, the INI file need not give the axes' speeds."""
+    base = DEFAULT_MACHINE
+    if ini is not None:
+        base = replace(base, travel=soft_limits(ini), linear_units=linear_units(ini))
+    if toml_path is not None:
+        base = machine_from_toml(toml_path, base)
+    return base.travel, base.linear_units
 
 
 # A machine's travel: the soft limits of each axis, in machine units (degrees for A, B, C).
@@ -497,5 +513,4 @@ def soft_limits(ini: Ini) -> SoftLimits:
 
 def ini_linear_units(ini: Ini) -> str:
     """The machine's linear units, ``mm`` or ``inch`` ([TRAJ]LINEAR_UNITS; mm without it)."""
-    value = _ini_value(ini, "TRAJ", "LINEAR_UNITS", _linear_units, UNITS_EXPECTED)
-    return "mm" if value is None else value
+    return linear_units(ini)

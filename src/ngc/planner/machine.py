@@ -69,6 +69,9 @@ class Machine:
     spindle_stop_time: float = 0.0
     # Where the machine stands when the program starts, machine coordinates (axis -> position).
     start_position: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
+    # The axes' travel, their soft limits (axis -> (min, max), machine coordinates): the INI
+    # file's MIN_LIMIT/MAX_LIMIT or the TOML file's ``travel``; an axis not in it has none.
+    travel: Mapping[str, tuple[float, float]] = field(default_factory=lambda: MappingProxyType({}))
 
     def limits(self, axis: str) -> AxisLimits | None:
         return self.axes.get(axis)

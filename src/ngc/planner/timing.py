@@ -23,10 +23,11 @@ from ..canon.ops import Sink
 from ..interp.interpreter import Interpreter
 from ..interp.source import ProgramReader, text_reader
 from ..options import MachineOptions, load_setup, new_interpreter
-from ..toolpath.tracker import Toolpath
+from ..toolpath.limits import Excess, LimitWatch
+from ..toolpath.tracker import Tee, Toolpath
 from .lookahead import MAX_SECONDS, Planner, TooLong
 from .machine import DEFAULT_MACHINE, Machine
-from .moves import PathSink
+from .moves import AXES6, PathSink
 from .segment import BLEND, Segment
 
 KINDS = ("rapid", "feed", "arc", "dwell", "tool change", "spindle", "wait")
@@ -115,6 +116,8 @@ class TimeResult:
     by_line: LineTimes = field(default_factory=LineTimes)
     segments: int = 0
     length: float = 0.0
+    # Where the moves go past the machine's travel (:attr:`Machine.travel`), axis and side.
+    limits: tuple[Excess, ...] = ()
     _slowest: dict[int, list[tuple[int, float]]] = field(default_factory=dict, repr=False,
                                                         compare=False)
 
@@ -137,7 +140,19 @@ class Timer:
         self.on_wait = on_wait
         self.result = TimeResult()
         self.planner = Planner(machine, self.segment)
-        self.path = PathSink(machine, self.planner, self.wait, toolpath)
+        # A machine with a travel has the moves held against it on their way to the planner
+        # (a toolpath the caller gives is theirs to watch: ``ngc plot --time``).
+        self.watch: LimitWatch | None = None
+        if toolpath is None and machine.travel:
+            tee = Tee()
+            start = machine.start_position
+            toolpath = Toolpath(tee, inch_machine=machine.linear_units == "inch",
+                                start=tuple(float(start.get(a, 0.0)) for a in AXES6))  # type: ignore[arg-type]
+            self.watch = LimitWatch(machine.travel, toolpath)
+            self.path = PathSink(machine, self.planner, self.wait, toolpath)
+            tee.readers.extend((self.path, self.watch))
+        else:
+            self.path = PathSink(machine, self.planner, self.wait, toolpath)
         self.sink = self.path.toolpath
         self.last_kind = "feed"
         # time of the run of segments of one kind and one tool, not yet in by_kind and by_tool
@@ -205,6 +220,8 @@ class Timer:
         self.sink.flush()
         self._close_run()
         self.result.total_s = self.planner.total
+        if self.watch is not None:
+            self.result.limits = tuple(self.watch.excesses())
         return self.result
 
 

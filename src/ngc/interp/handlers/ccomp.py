@@ -14,7 +14,7 @@ from ...errors import NgcSemanticError
 from .. import comp
 from ..comp import Compensation
 from ..state import MM_PER_INCH
-from .tools import whole
+from .tools import not_found, whole
 
 if TYPE_CHECKING:
     from ..machine import Machine
@@ -63,7 +63,7 @@ def from_table(it: Machine, r: Resolved, code: int) -> None:
         raise NgcSemanticError(f"{name} requires D word to be a whole number")
     entry = it.current_tool() if number == 0 else it.tools.find(number)
     if entry is None:
-        raise NgcSemanticError(f"Requested tool {number} not found in the tool table")
+        raise not_found(number, "d")
     if entry.orientation not in (0, 9) and st.plane != 180:
         raise NgcSemanticError(f"{name} with lathe tool, but plane is not G18")
     start(it, 1 if code == 410 else -1, length_to_program(entry.diameter, st.metric),

@@ -34,8 +34,18 @@ _LINEAR9 = (True, True, True, False, False, False, True, True, True)
 _G59_3 = 9  # the coordinate system G10 L11 measures from
 
 
-def _not_found(number: int) -> NgcSemanticError:
-    return NgcSemanticError(f"Requested tool {number} not found in the tool table")
+def not_found(number: int, letter: str = "t") -> NgcSemanticError:
+    """LinuxCNC's error for a tool the table lacks, and what to do about it; ``letter`` is the
+    word that named it (T, or D for G41/G42, P for G10 L1)."""
+    err = NgcSemanticError(f"Requested tool {number} not found in the tool table")
+    err.about = MISSING_TOOL_ADVICE
+    err.word = (letter, float(number))
+    return err
+
+
+MISSING_TOOL_ADVICE = ("give the machine's tool table with -t FILE (without it, rs274's sample "
+                       "table: tools 1, 2, 3 and 99999), or --any-tool to take a tool it lacks "
+                       "as one with no offsets")
 
 
 def _to_program_units(st: State, offsets: tuple[float, ...]) -> list[float]:
@@ -43,14 +53,15 @@ def _to_program_units(st: State, offsets: tuple[float, ...]) -> list[float]:
     return [length_to_program(v, metric) if _LINEAR9[i] else v for i, v in enumerate(offsets)]
 
 
-def _lookup(it: Machine, number: int) -> ToolEntry:
-    """The entry of tool ``number``; 0 is the tool in the spindle."""
+def _lookup(it: Machine, number: int, letter: str = "h") -> ToolEntry:
+    """The entry of tool ``number`` (named by the word ``letter``); 0 is the tool in the
+    spindle."""
     tools = it.state.tools
     if number == 0:
         return _current(it.state)
     entry = tools.find(number) if number > 0 else None
     if entry is None:
-        raise _not_found(number)
+        raise not_found(number, letter)
     return entry
 
 
@@ -71,7 +82,7 @@ def select_tool(it: Machine, t: float) -> None:
     else:
         found = st.tools.index(number)
         if found is None:
-            raise _not_found(number)
+            raise not_found(number)
         index = found
     it.emit(ops.SelectTool(number))
     st.selected_index = index
@@ -100,7 +111,7 @@ def set_tool_number(it: Machine, r: Words) -> None:
         raise NgcSemanticError("Need non-negative Q-word to specify tool number with M61")
     index = 0 if number == 0 else st.tools.index(number)
     if index is None:
-        raise _not_found(number)
+        raise not_found(number, "q")
     it.emit(ops.ChangeToolNumber(index))
     st.tool_index = index
     st.tool_changed = True
@@ -212,7 +223,7 @@ def g10_tools(it: Machine, r: Words, l_word: int) -> None:
     number = whole(w["p"])
     index = tools.index(number)
     if index is None:
-        raise _not_found(number)
+        raise not_found(number, "p")
     axes = [(i, w[letter]) for i, letter in enumerate(AXIS_LETTERS) if letter in w]
     if not axes and not any(letter in w for letter in "rijq"):
         raise NgcSemanticError("G10 L1 without offsets has no effect")

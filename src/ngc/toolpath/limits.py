@@ -13,8 +13,8 @@ from typing import NamedTuple
 
 from ..canon import ops
 from ..render import curves
-from ..toolpath.frame import Pos
-from ..toolpath.tracker import ArcMove, Cubics, Toolpath
+from .frame import Pos
+from .tracker import ArcMove, Cubics, Toolpath
 
 AXES = "XYZABC"
 UNIT_VECTORS = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
