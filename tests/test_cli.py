@@ -115,6 +115,8 @@ def test_check_good_file(capsys: pytest.CaptureFixture[str], good: Path) -> None
         "  moves: 7 (2 traverse, 5 feed, 0 arc)",
         "  rapid length: 3.0000 mm, feed length: 42.0000 mm",
         "  extents: X 0.0000 .. 10.0000  Y 0.0000 .. 10.0000  Z -1.0000 .. 1.0000 mm",
+        "  no tool: cuts 42.0000 mm, 0:00:25.200 at the programmed feed",
+        "  feed: 100 .. 100 mm/min",
     ]
 
 

@@ -288,7 +288,12 @@ def test_check_json(capsys: pytest.CaptureFixture[str], work: Path) -> None:
         "file": "good.ngc", "ok": True, "lines": 4, "error": None,
         "summary": {"units": "inch", "moves": 2, "traverses": 1, "feeds": 1, "arcs": 0,
                     "rapid_length": 2.0, "feed_length": 1.0, "mixed_units": False,
-                    "extents": {"low": [0.0, 0.0, 0.0], "high": [1.0, 2.0, 0.0]}},
+                    "extents": {"low": [0.0, 0.0, 0.0], "high": [1.0, 2.0, 0.0]},
+                    # (F10 runs before G20 on its line: 10 mm/min, as LinuxCNC feeds it)
+                    "tools": [{"tool": 0, "diameter": None, "length": None, "cut_length": 1.0,
+                               "cut_seconds": pytest.approx(152.4)}],
+                    "feed_per_minute": [pytest.approx(10 / 25.4)] * 2, "feed_per_rev": None,
+                    "spindle_rpm": None, "surface_speed": None},
     }  # fmt: skip
     assert records[1] == {
         "file": "nope.ngc", "ok": False, "lines": None, "summary": None,
@@ -367,7 +372,9 @@ def test_check_json_of_an_infinite_summary() -> None:
         "file": "x.ngc", "ok": True, "lines": 2, "error": None,
         "summary": {"units": "mm", "moves": 1, "traverses": 1, "feeds": 0, "arcs": 0,
                     "rapid_length": None, "feed_length": 0.0, "mixed_units": False,
-                    "extents": {"low": [None, 0.0, 0.0], "high": [None, 0.0, 0.0]}},
+                    "extents": {"low": [None, 0.0, 0.0], "high": [None, 0.0, 0.0]},
+                    "tools": [], "feed_per_minute": None, "feed_per_rev": None,
+                    "spindle_rpm": None, "surface_speed": None},
     }  # fmt: skip
 
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any, Literal, overload
 
 from ..canon import ops
@@ -26,6 +26,7 @@ from ..toolpath.limits import Excess, LimitWatch
 from ..toolpath.tracker import RAPID, ArcMove, Cubics, Tee, Toolpath
 from .check_common import error_record, headline
 from .common import defined_names
+from .usage import Usage, UsageSummary, usage_lines, usage_record
 
 if TYPE_CHECKING:
     from ..engine import Setup as EngineSetup
@@ -34,6 +35,7 @@ if TYPE_CHECKING:
 
 MM_PER_UNIT = {"CANON_UNITS_MM": 1.0, "CANON_UNITS_INCHES": 25.4, "CANON_UNITS_CM": 10.0}
 UNIT_NAMES = {"CANON_UNITS_MM": "mm", "CANON_UNITS_INCHES": "inch", "CANON_UNITS_CM": "cm"}
+_CANON_UNITS = {name: canon for canon, name in UNIT_NAMES.items()}
 
 TAU = 2.0 * math.pi
 QUADRANT_ANGLES = (0.0, 0.5 * math.pi, math.pi, 1.5 * math.pi)
@@ -67,6 +69,7 @@ class Summary:
     feed_length: float
     extents: Extents | None
     mixed_units: bool
+    usage: UsageSummary = field(default_factory=UsageSummary)  # the tools, feeds and speeds
 
     @property
     def moves(self) -> int:
@@ -92,6 +95,7 @@ class Summarizer:
         "_traverses",
         "_units",
         "_units_changed",
+        "_usage",
         "_waiting",
         "toolpath",
     )
@@ -111,6 +115,7 @@ class Summarizer:
         # alone (a first ``G0 Z5`` does not put the machine origin's X and Y in the extents).
         self._waiting: tuple[int, ...] = (0, 1, 2)
         self._stay: Sequence[float] = (0.0, 0.0, 0.0)  # where they are, after the last rapid
+        self._usage = Usage()
 
     # -- the sink protocol ------------------------------------------------------------------------
     def emit(self, op: Op, label: str, line: int) -> None:
@@ -147,6 +152,7 @@ class Summarizer:
             feed_length=self._feed_length,
             extents=extents,
             mixed_units=self._units_changed,
+            usage=self._usage.summary(self._mm_per_unit),
         )
 
     # -- the toolpath's consumer protocol ---------------------------------------------------------
@@ -165,6 +171,7 @@ class Summarizer:
         else:
             self._feeds += 1
             self._feed_length += length
+            self._usage.cut(length * self._mm_per_unit, tp.tool)
             if self._waiting:
                 self._waiting = ()
                 self._include(p)
@@ -186,6 +193,7 @@ class Summarizer:
             self._include(xyz)
         self._include(self.toolpath.prog_end)
         self._feed_length += length
+        self._usage.cut(length * self._mm_per_unit, self.toolpath.tool)
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
         """A curve is not counted (its end is where the next move starts)."""
@@ -199,6 +207,8 @@ class Summarizer:
     def other(self, op: Op, line: int) -> None:
         if type(op) is ops.UseLengthUnits:
             self._length_units(op)
+        else:
+            self._usage.see(op, self._mm_per_unit)
 
     def finish(self) -> None:
         """Nothing is held back."""
@@ -407,6 +417,10 @@ def check_lines(
     except NgcError as exc:
         error = exc
     summary = summarizer.summary()
+    slots = interp.machine.state.tools.slots
+    summary = replace(summary, usage=summary.usage.with_tool_data(
+        lambda number: next((e for e in slots[1:] if e.number == number), None),
+        MM_PER_UNIT[_CANON_UNITS[summary.units]] if summary.units in _CANON_UNITS else 1.0))
     defined: tuple[str, ...] = ()
     if error is None and summary.moves == 0:
         defined = defined_names(interp)
@@ -510,6 +524,7 @@ def render(result: CheckResult) -> str:
     ]
     if s.mixed_units:
         paragraph.append(f"  (the program changes length units; all lengths are in {s.units})")
+    paragraph.extend(usage_lines(s.usage, s.units))
     paragraph.extend(f"  {excess.text(result.machine_units)}" for excess in result.limits)
     if result.subroutines:
         paragraph.append(f"  no moves: the file defines {', '.join(result.subroutines)} (a "
@@ -552,7 +567,7 @@ def record(result: CheckResult) -> dict[str, object]:
         "units": s.units, "moves": s.moves, "traverses": s.traverses, "feeds": s.feeds,
         "arcs": s.arcs, "rapid_length": _finite_or_none(s.rapid_length),
         "feed_length": _finite_or_none(s.feed_length),
-        "extents": extents, "mixed_units": s.mixed_units,
+        "extents": extents, "mixed_units": s.mixed_units, **usage_record(s.usage),
     }  # fmt: skip
     out: dict[str, object] = {
         "file": result.path, "ok": result.ok, "lines": result.lines,

@@ -47,6 +47,18 @@ def load_inputs(command: str, options: argparse.Namespace,
     return machine, setup
 
 
+def clock(seconds: float) -> str:
+    """``h:mm:ss.sss``.
+
+    >>> clock(83.4564), clock(3600.0), clock(0.0)
+    ('0:01:23.456', '1:00:00.000', '0:00:00.000')
+    """
+    ms = round(seconds * 1000.0)
+    hours, ms = divmod(ms, 3_600_000)
+    minutes, ms = divmod(ms, 60_000)
+    return f"{hours}:{minutes:02d}:{ms // 1000:02d}.{ms % 1000:03d}"
+
+
 def any_tool_warning(command: str, options: argparse.Namespace) -> Callable[[int], None] | None:
     """With ``--any-tool``, what tells of a tool the table lacks, taken as one with no offsets."""
     if not getattr(options, "any_tool", False):

@@ -18,6 +18,7 @@ from ..canon.jsonl import dumps
 from ..interp.source import open_text_program
 from ..planner.machine import ANGULAR_AXES, Machine
 from ..planner.timing import KINDS, TimeResult
+from .common import clock
 
 JSON_CHUNK = 4096  # lines of by_line written at a time
 DIGITS = 6  # JSON numbers are rounded to the microsecond (and the micrometre)
@@ -25,17 +26,6 @@ SOURCE_WIDTH = 60  # characters of a slowest line's source text shown in the tex
 MACHINE_TIMES = (("tool change", "tool_change_time"), ("spindle start", "spindle_start_time"),
                  ("spindle stop", "spindle_stop_time"))
 
-
-def clock(seconds: float) -> str:
-    """``h:mm:ss.sss``.
-
-    >>> clock(83.4564), clock(3600.0), clock(0.0)
-    ('0:01:23.456', '1:00:00.000', '0:00:00.000')
-    """
-    ms = round(seconds * 1000.0)
-    hours, ms = divmod(ms, 3_600_000)
-    minutes, ms = divmod(ms, 60_000)
-    return f"{hours}:{minutes:02d}:{ms // 1000:02d}.{ms % 1000:03d}"
 
 
 def ratio(result: TimeResult) -> float | None:
