@@ -68,13 +68,15 @@ class UsageSummary:
 
 class Usage:
     """The running state (feed, spindle) and totals; lengths are kept in mm and feeds in mm per
-    minute or revolution, whatever the program's units."""
+    minute or revolution, whatever the program's units.  A cut in the same state as the one
+    before costs two additions: the state is settled (the tool's totals found, the seconds per
+    mm worked out, the ranges widened) only when something changed."""
 
-    __slots__ = ("_css", "_feed", "_per_rev", "_ranges", "_rpm", "_spindle_on", "_sync",
-                 "_tools")
+    __slots__ = ("_css", "_dirty", "_feed", "_per_rev", "_ranges", "_rpm", "_seconds_per_mm",
+                 "_spindle_on", "_sync", "_tool", "_tools", "_totals")
 
     def __init__(self) -> None:
-        self._feed = 0.0  # in the program's units when it was set, per minute or revolution
+        self._feed = 0.0  # in mm when it was set, per minute or revolution
         self._per_rev = False
         self._rpm = 0.0  # or the surface speed, under G96
         self._css = False
@@ -82,6 +84,10 @@ class Usage:
         self._sync = 0.0  # G33, G76: mm per revolution of the spindle (0: not synchronised)
         self._tools: dict[int, list[float]] = {}  # tool -> [mm cut, seconds, seconds unknown]
         self._ranges: dict[str, list[float]] = {}  # name -> [low, high]
+        self._tool = -1  # the tool of the last cut, its totals, the seconds each mm takes
+        self._totals = [0.0, 0.0, 0.0]
+        self._seconds_per_mm = 0.0
+        self._dirty = True
 
     def see(self, op: ops.Op, mm_per_unit: float) -> None:
         """Follow one of the canon operations that are not moves."""
@@ -102,31 +108,41 @@ class Usage:
             self._sync = op.per_rev * mm_per_unit  # type: ignore[attr-defined]
         elif kind is ops.StopSpeedFeedSynch:
             self._sync = 0.0
+        else:
+            return
+        self._dirty = True
 
     def cut(self, length_mm: float, tool: int) -> None:
         """A cutting move of ``length_mm`` with ``tool`` at the current feed and speed."""
+        if tool != self._tool or self._dirty:
+            self._settle(tool)
+        totals = self._totals
+        totals[0] += length_mm
+        totals[1] += length_mm * self._seconds_per_mm
+
+    def _settle(self, tool: int) -> None:
+        """The tool's totals, the seconds a mm takes now, the ranges the state widens."""
         totals = self._tools.get(tool)
         if totals is None:
             totals = self._tools[tool] = [0.0, 0.0, 0.0]
-        totals[0] += length_mm
-        feed = self._feed
-        if self._sync > 0.0:  # (a thread: the pitch per revolution, not the feed)
-            if self._css:
-                totals[2] = 1.0
-            elif self._rpm > 0.0:
-                totals[1] += 60.0 * length_mm / (self._sync * self._rpm)
-        elif self._per_rev:
-            self._widen("feed_per_rev", feed)
+        self._tool, self._totals, self._dirty = tool, totals, False
+        feed, rpm, sync = self._feed, self._rpm, self._sync
+        per_mm = 0.0
+        if sync > 0.0 or self._per_rev:  # (a thread: the pitch per revolution, not the feed)
+            per_rev = sync if sync > 0.0 else feed
+            if sync <= 0.0:
+                self._widen("feed_per_rev", feed)
             if self._css:
                 totals[2] = 1.0  # (the spindle's speed follows the diameter cut)
-            elif feed > 0.0 and self._rpm > 0.0:
-                totals[1] += 60.0 * length_mm / (feed * self._rpm)
+            elif per_rev > 0.0 and rpm > 0.0:
+                per_mm = 60.0 / (per_rev * rpm)
         else:
             self._widen("feed_per_minute", feed)
             if feed > 0.0:
-                totals[1] += 60.0 * length_mm / feed
+                per_mm = 60.0 / feed
+        self._seconds_per_mm = per_mm
         if self._spindle_on:
-            self._widen("surface_speed" if self._css else "spindle_rpm", self._rpm)
+            self._widen("surface_speed" if self._css else "spindle_rpm", rpm)
 
     def _widen(self, name: str, value: float) -> None:
         held = self._ranges.get(name)
