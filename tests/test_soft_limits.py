@@ -156,3 +156,39 @@ def test_a_bad_travel_is_refused(tmp_path: Path, capsys: pytest.CaptureFixture[s
     path = write(tmp_path, "p.ngc", "G0 X1\nM2\n")
     code, _, err = run(capsys, "check", "--machine", toml, path)
     assert code == 2 and message in err
+
+
+FAST = """[TRAJ]
+LINEAR_UNITS = mm
+MAX_LINEAR_VELOCITY = 40
+[AXIS_X]
+MAX_VELOCITY = 30
+[AXIS_Z]
+MAX_VELOCITY = 5
+"""
+
+
+def test_feeds_past_max_velocity_are_noted(tmp_path: Path,
+                                           capsys: pytest.CaptureFixture[str]) -> None:
+    program = ("G21\nG1 X10 F1200\nG1 X20 Y10 F3000\nG1 Z-5 F600\nG2 X30 Y0 I5 J-5 F1200\n"
+               "G20 G1 X2 F60\nM2\n")
+    code, out, _ = check(tmp_path, capsys, program, FAST)
+    assert code == 0  # a note: the machine runs them slower
+    assert [line.strip() for line in out.splitlines() if "faster" in line] == [
+        # line 3: 3000 mm/min along (10, 10): X at 50 / sqrt 2; line 6: F60 runs before G20 (1 mm/s)
+        "Feed faster than the machine: axis X asked for up to 35.3553 mm/s, past its "
+        "MAX_VELOCITY of 30 mm/s, first at line 3 (the machine runs those moves slower)",
+        "Feed faster than the machine: axis Z asked for up to 10.0000 mm/s, past its "
+        "MAX_VELOCITY of 5 mm/s, first at line 4 (the machine runs those moves slower)",
+        "Feed faster than the machine: the path asked for up to 50.0000 mm/s, past its "
+        "MAX_LINEAR_VELOCITY of 40 mm/s, first at line 3 (the machine runs those moves slower)"]
+    code, out, _ = check(tmp_path, capsys, program, FAST, "--format", "json")
+    assert [(f["axis"], round(f["asked"], 4), f["limit"], f["line"])
+            for f in json.loads(out)["fast_feeds"]] == [
+        ("X", 35.3553, 30.0, 3), ("Z", 10.0, 5.0, 4), ("path", 50.0, 40.0, 3)]
+
+
+def test_an_arc_asks_its_planes_axes_for_the_whole_feed(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = check(tmp_path, capsys, "G21\nG2 X10 Y0 I5 J0 F2000\nM2\n", FAST)
+    assert code == 0 and "axis X asked for up to 33.3333 mm/s" in out and "axis Z" not in out

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import os
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any, Literal, overload
 
@@ -22,7 +22,7 @@ from ..errors import NgcError
 from ..interp.interpreter import Interpreter
 from ..interp.source import ProgramReader, open_text_program
 from ..toolpath.frame import Pos
-from ..toolpath.limits import Excess, LimitWatch
+from ..toolpath.limits import Excess, FastFeed, FeedWatch, LimitWatch
 from ..toolpath.tracker import RAPID, ArcMove, Cubics, Tee, Toolpath
 from .check_common import error_record, headline
 from .common import defined_names
@@ -361,6 +361,7 @@ class CheckResult:
     machine_units: str = "mm"
     subroutines: tuple[str, ...] = ()  # those a program that moved nothing only defined
     diameter: bool = False  # the program ends in a lathe's diameter mode (G7): X as a diameter
+    fast_feeds: tuple[FastFeed, ...] = ()  # feeds past the axes' MAX_VELOCITY (a note)
     dialect = "linuxcnc"  # (an engine program's is an ngc.commands.check_engine.EngineCheckResult)
 
     @property
@@ -380,6 +381,7 @@ def check_lines(
     reader: ProgramReader | None = None,
     limits: SoftLimits | None = None,
     machine_units: str = "mm",
+    speeds: tuple[Mapping[str, float], float | None] | None = None,
 ) -> CheckResult:
     """Run a program, given as its lines, through an interpreter, keeping only a summary of its
     motion; ``name`` is the file name errors carry.  ``new_interpreter`` makes the interpreter
@@ -390,7 +392,9 @@ def check_lines(
 
     ``limits`` are the machine's soft limits (:func:`ngc.planner.config.soft_limits`, in
     ``machine_units``): the moves that go past them are in :attr:`CheckResult.limits`, and the
-    program is not ``ok``.
+    program is not ``ok``.  ``speeds`` are the axes' MAX_VELOCITY and the path's
+    MAX_LINEAR_VELOCITY (:func:`ngc.planner.config.axis_speeds`, in ``machine_units``): the feeds
+    that ask for more are in :attr:`CheckResult.fast_feeds` (a note: the program stays ``ok``).
 
     >>> result = check_lines(["G21 F100", "G1 X3", "G1 Y4", "M2"], "square.ngc")
     >>> result.ok, result.lines, result.summary.feeds, result.summary.feed_length
@@ -400,12 +404,18 @@ def check_lines(
     (False, 'Program exceeds machine maximum on axis X: 400.0000 mm past 100, first at line 1')
     """
     watch: LimitWatch | None = None
-    if limits:
+    feeds: FeedWatch | None = None
+    if limits or (speeds and (speeds[0] or speeds[1] is not None)):
         tee = Tee()
         toolpath = Toolpath(tee, inch_machine=machine_units == "inch")
         summarizer = Summarizer(toolpath)
-        watch = LimitWatch(limits, toolpath)
-        tee.readers.extend((summarizer, watch))
+        tee.readers.append(summarizer)
+        if limits:
+            watch = LimitWatch(limits, toolpath)
+            tee.readers.append(watch)
+        if speeds:
+            feeds = FeedWatch(speeds[0], speeds[1], toolpath)
+            tee.readers.append(feeds)
     else:
         summarizer = Summarizer()
     counted = _CountedLines(lines)
@@ -427,7 +437,8 @@ def check_lines(
     return CheckResult(path=name, lines=counted.total(), summary=summary,
                        error=error, limits=() if watch is None else tuple(watch.excesses()),
                        machine_units=machine_units, subroutines=defined,
-                       diameter=interp.machine.state.lathe_diameter)
+                       diameter=interp.machine.state.lathe_diameter,
+                       fast_feeds=() if feeds is None else tuple(feeds.excesses()))
 
 
 @overload
@@ -526,6 +537,7 @@ def render(result: CheckResult) -> str:
         paragraph.append(f"  (the program changes length units; all lengths are in {s.units})")
     paragraph.extend(usage_lines(s.usage, s.units))
     paragraph.extend(f"  {excess.text(result.machine_units)}" for excess in result.limits)
+    paragraph.extend(f"  {fast.text(result.machine_units)}" for fast in result.fast_feeds)
     if result.subroutines:
         paragraph.append(f"  no moves: the file defines {', '.join(result.subroutines)} (a "
                          "subroutine file is checked through a program that calls it)")
@@ -580,4 +592,8 @@ def record(result: CheckResult) -> dict[str, object]:
         out["soft_limits"] = [{"axis": e.axis, "side": e.side, "limit": e.limit, "by": e.by,
                                "line": e.line, "units": result.machine_units}
                               for e in result.limits]
+    if result.fast_feeds:
+        out["fast_feeds"] = [{"axis": f.axis, "asked": f.asked, "limit": f.limit,
+                              "line": f.line, "units": result.machine_units}
+                             for f in result.fast_feeds]
     return out

@@ -88,15 +88,17 @@ def _check_file(options: argparse.Namespace, path: str) -> int:
         def quiet(sink: Sink) -> Interpreter:
             return new_interpreter(sink, inputs, setup, write_files=False)
 
-        limits, units = None, "mm"
+        limits, units, speeds = None, "mm", None
         if setup.ini is not None or options.machine_file is not None:
-            from ..planner.config import machine_travel  # (the machine's soft limits, its units)
+            from ..planner.config import axis_speeds, machine_travel
 
-            limits, units = machine_travel(setup.ini, options.machine_file)
+            limits, units = machine_travel(setup.ini, options.machine_file)  # (in its units)
+            speeds = None if setup.ini is None else axis_speeds(setup.ini)
         handle = text_reader(program.handle)
         with handle, progress_of(program.name, handle, output_to_terminal=False) as progress:
             result = report.check_lines(progress.lines(handle), program.name, quiet,
-                                        reader=handle, limits=limits, machine_units=units)
+                                        reader=handle, limits=limits, machine_units=units,
+                                        speeds=speeds)
         error = result.error
         if error is None and result.limits:
             code = EXIT_PROGRAM_ERROR

@@ -468,6 +468,26 @@ def load_machine(ini: Ini | None, toml_path: str | None) -> Machine:
     return machine if toml_path is None else machine_from_toml(toml_path, machine)
 
 
+def axis_speeds(ini: Ini) -> tuple[Mapping[str, float], float | None]:
+    """The speeds an INI file states: each axis's MAX_VELOCITY where its [AXIS_<letter>] or
+    joints' sections give one (the smallest), and [TRAJ]MAX_LINEAR_VELOCITY (None if unset); in
+    machine units per second.  Unlike :func:`machine_from_ini`, nothing is required.
+
+    >>> axis_speeds(Ini.parse("[AXIS_X]\\nMAX_VELOCITY = 30\\n[TRAJ]\\nMAX_LINEAR_VELOCITY = 50\\n"))
+    ({'X': 30.0}, 50.0)
+    """
+    coordinates = _ini_coordinates(ini)
+    joints = _ini_joints(ini, coordinates)
+    speeds = {}
+    for axis in ALL_AXES:
+        if axis in coordinates:
+            velocity = _smallest(ini, _limit_sections(axis, joints), "MAX_VELOCITY")
+            if velocity is not None:
+                speeds[axis] = velocity
+    cap = _ini_value(ini, *INI_FIELDS["max_linear_velocity"])
+    return speeds, None if cap is None else float(cap)  # type: ignore[arg-type]
+
+
 def machine_travel(ini: Ini | None, toml_path: str | None) -> tuple[SoftLimits, str]:
     """The travel of the machine the INI and TOML files describe, and its units, for the
     commands that hold the moves against it without timing them (``check``, ``plot``): the INI
