@@ -119,7 +119,8 @@ def _write_bytes_as_read() -> None:
 
 
 # the module that runs each command (``ngc.commands``), by its name
-RUNNERS = {"canon": "canon", "check": "check_run", "time": "time_run", "plot": "plot_run"}
+RUNNERS = {"canon": "canon", "check": "check_run", "time": "time_run", "plot": "plot_run",
+           "view": "view_run"}
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -170,6 +171,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     _add_time(sub, [_machine_options()])
     _add_plot(sub, [_machine_options(), _dialect_options()])
+    _add_view(sub, [_machine_options(), _dialect_options()])
     return parser
 
 
@@ -207,6 +209,31 @@ def _add_plot(sub: argparse._SubParsersAction[argparse.ArgumentParser],
 
 
 VIEW_NAMES = ("top", "front", "side", "iso", "lathe")
+
+
+def _add_view(sub: argparse._SubParsersAction[argparse.ArgumentParser],
+              parents: list[argparse.ArgumentParser]) -> None:
+    view = sub.add_parser(
+        "view", parents=parents, help="the program in 3D in a browser page",
+        description="Write one self-contained HTML page (no server, no network when opened): "
+        "the toolpath in 3D, the program text beside it (click a segment to find its line), "
+        "the machine's time on a slider, the summary, the error where it stopped; and open it "
+        "in the default browser.",
+        epilog=PROGRAM_HELP,
+    )
+    view.add_argument("file", metavar="FILE", help="the program (- for standard input)")
+    view.add_argument("-o", "--output", metavar="PAGE", default=None,
+                      help="write the page to PAGE.html (and do not open it); default: a "
+                      "temporary file, opened in the browser")
+    view.add_argument("--no-open", action="store_true", help="do not open the browser")
+    view.add_argument("--machine", metavar="TOML", dest="machine_file",
+                      help="ngc's TOML machine file, over the default machine or -i's: the "
+                      "time and the trajectory on it, its travel held against the moves")
+    view.add_argument("--watch", action="store_true",
+                      help="serve the page on 127.0.0.1 and rebuild it when FILE changes "
+                      "(the page reloads itself); Ctrl-C stops")
+    view.add_argument("--port", type=int, default=0,
+                      help="with --watch: the port (default: a free one, printed)")
 
 
 def _add_jobs(parser: argparse.ArgumentParser) -> None:
