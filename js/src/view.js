@@ -144,7 +144,7 @@ class Viewer {
     this.measureLine.renderOrder = 4;
     this.scene.add(this.measureLine);
     this.recolour();
-    this.setView("iso");
+    this.setView(this.meta.view || "iso");
     new ResizeObserver(() => this.resize()).observe(canvasBox);
     this.resize();
     renderer.domElement.addEventListener("pointerdown", (e) => { this.down = [e.clientX, e.clientY]; });
@@ -185,7 +185,7 @@ class Viewer {
   }
 
   setView(name) {
-    const dirs = { top: [0, 0, 1], front: [0, -1, 0], side: [1, 0, 0], iso: [1, -1, 0.8], lathe: [0, -1, 0] };
+    const dirs = { top: [0, 0, 1], front: [0, -1, 0], side: [1, 0, 0], iso: [1, -1, 0.8], lathe: [0, 1, 0] };
     const d = new THREE.Vector3(...(dirs[name] || dirs.iso)).normalize();
     this.camera.up.set(0, 0, 1);
     if (name === "top") this.camera.up.set(0, 1, 0);
@@ -497,7 +497,7 @@ async function main() {
 
   document.getElementById("colour").addEventListener("change", (e) => { viewer.colourBy = e.target.value; viewer.recolour(); });
   for (const name of ["top", "front", "side", "iso"]) document.getElementById(`view-${name}`).addEventListener("click", () => viewer.setView(name));
-  document.getElementById("fit").addEventListener("click", () => viewer.setView("iso"));
+  document.getElementById("fit").addEventListener("click", () => viewer.setView(meta.view || "iso"));
   const measureButton = document.getElementById("measure");
   const toggleMeasure = () => {
     viewer.measuring = !viewer.measuring;
@@ -527,7 +527,7 @@ async function main() {
     if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
     const keys = { 1: "top", 2: "front", 3: "side", 4: "iso" };
     if (keys[e.key]) viewer.setView(keys[e.key]);
-    else if (e.key === "f") viewer.setView("iso");
+    else if (e.key === "f") viewer.setView(meta.view || "iso");
     else if (e.key === " ") { e.preventDefault(); viewer.play(); }
     else if (e.key === "m") toggleMeasure();
     else if (e.key === "/") { e.preventDefault(); search.focus(); }

@@ -102,10 +102,14 @@ def _page(options: argparse.Namespace) -> Page:
                     raise
                 sys.stderr.write(f"ngc view: warning: not timed: {exc.message}\n")
             text = dialects.read_text(program.handle)
+            from .plot import auto_view
+
+            view = "lathe" if auto_view(text.encode("utf-8", "surrogateescape")) == "lathe" \
+                else "iso"
             return build_page(text, program.name,
                               lambda sink: new_interpreter(sink, inputs, loaded,
                                                            write_files=False),
-                              machine=machine)
+                              machine=machine, view=view)
         except NgcConfigError as exc:
             raise _Refused(exc.message) from None
     finally:

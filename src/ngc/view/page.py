@@ -82,10 +82,11 @@ class _Rows:
 def build_page(text: str, name: str, new_interpreter: Callable[[Sink], Interpreter], *,
                machine: Machine | None = None, units: str = "mm",
                engine: EngineSetup | None = None, engine_dialect: bool = False,
-               max_iterations: int | None = None) -> Page:
+               max_iterations: int | None = None, view: str = "iso") -> Page:
     """The page of the program ``text`` (named ``name``), run by ``new_interpreter(sink)`` (or,
     ``engine_dialect``, by the engine with ``engine``); timed on ``machine`` if given (whose units
-    are then the page's), else drawn in ``units``."""
+    are then the page's), else drawn in ``units``; ``view`` is the view it opens in (``iso``,
+    or ``lathe``: Z to the right, X up)."""
     if machine is not None:
         units = machine.linear_units
     inch = units == "inch"
@@ -119,6 +120,7 @@ def build_page(text: str, name: str, new_interpreter: Callable[[Sink], Interpret
         rows = _trajectory(text, name, new_interpreter, machine, result.total_s)
     warnings = tuple(e.text(units) for e in (watch.excesses() if watch else ()))
     meta = _meta(name, units, path, result, machine, error, toolpath, warnings)
+    meta["view"] = view
     html = _html(name, meta, text, path, lines, rows)
     return Page(html, path.count, error, None if result is None else result.total_s, warnings)
 
