@@ -22,9 +22,10 @@ function el(tag, attrs, ...children) {
   return node;
 }
 
-async function decode(b64) {
+async function decode(b64) { // base64 of gzip, as the page holds its arrays and text
   const response = await fetch("data:application/octet-stream;base64," + b64);
-  return response.arrayBuffer();
+  const stream = response.body.pipeThrough(new DecompressionStream("gzip"));
+  return new Response(stream).arrayBuffer();
 }
 
 function clock(seconds) {
@@ -103,6 +104,8 @@ class Viewer {
     this.controls.enableDamping = false;
     this.controls.addEventListener("change", () => this.draw());
 
+    // Two draw calls: the rapids faint (transparent, drawn after the cuts, not hiding them) and
+    // the cuts; every segment keeps its place in one array for picking and measuring.
     const n = this.count;
     const positions = new Float32Array(n * 6);
     const P = this.points;
@@ -110,15 +113,33 @@ class Viewer {
       const a = this.segStart[i] * 3;
       positions.set(P.subarray(a, a + 6), i * 6);
     }
-    this.colours = new Float32Array(n * 6);
-    this.baseColours = new Float32Array(n * 3);
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute("position", new THREE.BufferAttribute(positions, 3));
-    geometry.setAttribute("color", new THREE.BufferAttribute(this.colours, 3));
-    geometry.computeBoundingSphere();
-    this.path = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ vertexColors: true }));
-    this.scene.add(this.path);
     this.positions = positions;
+    let rapids = 0;
+    for (let i = 0; i < n; i++) if (this.segKind[i] === 0) rapids++;
+    this.slot = new Uint32Array(n);
+    const groups = [new Float32Array(rapids * 6), new Float32Array((n - rapids) * 6)];
+    const fill = [0, 0];
+    for (let i = 0; i < n; i++) {
+      const g = this.segKind[i] === 0 ? 0 : 1;
+      this.slot[i] = fill[g];
+      groups[g].set(positions.subarray(i * 6, i * 6 + 6), fill[g] * 6);
+      fill[g]++;
+    }
+    this.colourSets = [new Float32Array(rapids * 6), new Float32Array((n - rapids) * 6)];
+    this.baseColours = new Float32Array(n * 3);
+    this.paths = groups.map((pos, g) => {
+      const geometry = new THREE.BufferGeometry();
+      geometry.setAttribute("position", new THREE.BufferAttribute(pos, 3));
+      geometry.setAttribute("color", new THREE.BufferAttribute(this.colourSets[g], 3));
+      geometry.computeBoundingSphere();
+      const material = g === 0
+        ? new THREE.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.35, depthWrite: false })
+        : new THREE.LineBasicMaterial({ vertexColors: true });
+      const lines = new THREE.LineSegments(geometry, material);
+      lines.renderOrder = g === 0 ? 1 : 0;
+      this.scene.add(lines);
+      return lines;
+    });
 
     this.highlight = new THREE.LineSegments(new THREE.BufferGeometry(),
       new THREE.LineBasicMaterial({ color: 0xff1f5a, depthTest: false }));
@@ -127,6 +148,7 @@ class Viewer {
 
     this.scene.add(this.axes(size));
     this.scene.add(this.extentsBox());
+    this.dimensions(canvasBox);
     const marker = new THREE.Mesh(new THREE.SphereGeometry(size / 120, 16, 12),
       new THREE.MeshBasicMaterial({ color: 0xffa000, depthTest: false }));
     marker.renderOrder = 3;
@@ -218,20 +240,22 @@ class Viewer {
   }
 
   shade() { // the colours, faded after the slider's time
-    const n = this.count, base = this.baseColours, out = this.colours, t = this.time;
+    const n = this.count, base = this.baseColours, t = this.time;
     const timed = !!this.meta.time;
+    const sets = this.colourSets, slot = this.slot, kind = this.segKind;
     for (let i = 0; i < n; i++) {
       let f = 1;
       if (timed) {
         const t0 = this.lineT0[this.segLine[i]];
         if (t0 === t0 && t0 > t) f = FADED;
       }
+      const out = sets[kind[i] === 0 ? 0 : 1], k = slot[i] * 6;
       const r = 1 - (1 - base[i * 3]) * f, g = 1 - (1 - base[i * 3 + 1]) * f, b = 1 - (1 - base[i * 3 + 2]) * f;
-      out[i * 6] = out[i * 6 + 3] = r;
-      out[i * 6 + 1] = out[i * 6 + 4] = g;
-      out[i * 6 + 2] = out[i * 6 + 5] = b;
+      out[k] = out[k + 3] = r;
+      out[k + 1] = out[k + 4] = g;
+      out[k + 2] = out[k + 5] = b;
     }
-    this.path.geometry.attributes.color.needsUpdate = true;
+    for (const lines of this.paths) lines.geometry.attributes.color.needsUpdate = true;
     this.draw();
   }
 
@@ -257,12 +281,37 @@ class Viewer {
     this.pending = true;
     requestAnimationFrame(() => {
       this.pending = false;
-      this.renderer.render(this.scene, this.camera);
+      this.drawNow();
     });
   }
 
   drawNow() {
     this.renderer.render(this.scene, this.camera);
+    this.placeDimensions();
+  }
+
+  dimensions(box) { // the extents' sizes, as labels on the box's edges
+    const m = this.meta;
+    this.dimensionLabels = ["X", "Y", "Z"].map((axis, i) => {
+      const label = el("div", { class: "dimension" }, `${axis} ${(m.high[i] - m.low[i]).toFixed(3)} ${m.units}`);
+      box.append(label);
+      return label;
+    });
+  }
+
+  placeDimensions() {
+    if (!this.dimensionLabels) return;
+    const m = this.meta, o = m.origin, lo = m.low, hi = m.high;
+    const mid = [(lo[0] + hi[0]) / 2 - o[0], (lo[1] + hi[1]) / 2 - o[1], (lo[2] + hi[2]) / 2 - o[2]];
+    const at = [[mid[0], lo[1] - o[1], lo[2] - o[2]], [hi[0] - o[0], mid[1], lo[2] - o[2]], [lo[0] - o[0], lo[1] - o[1], mid[2]]];
+    const r = this.renderer.domElement.getBoundingClientRect();
+    this.dimensionLabels.forEach((label, i) => {
+      const [x, y, z] = this.screenOf(...at[i]);
+      const visible = z < 1 && hi[i] > lo[i];
+      label.hidden = !visible;
+      label.style.left = `${x - r.left}px`;
+      label.style.top = `${y - r.top}px`;
+    });
   }
 
   // -- picking -----------------------------------------------------------------------------------
@@ -475,7 +524,7 @@ function summaryPanel(meta) {
   rows.push(["segments", String(meta.segments)]);
   rows.push(["rapid length", `${meta.lengths.rapid.toFixed(3)} ${u}`]);
   rows.push(["cut length", `${meta.lengths.cut.toFixed(3)} ${u}`]);
-  rows.push(["extents", ["X", "Y", "Z"].map((a, i) => `${a} ${meta.low[i].toFixed(3)} .. ${meta.high[i].toFixed(3)}`).join("  ") + ` ${u}`]);
+  rows.push(["extents (machine)", ["X", "Y", "Z"].map((a, i) => `${a} ${meta.low[i].toFixed(3)} .. ${meta.high[i].toFixed(3)}`).join("  ") + ` ${u}`]);
   for (const t of meta.tools) rows.push([t.name, t.text]);
   for (const w of meta.warnings) rows.push(["warning", w]);
   const table = el("table", {});
@@ -486,8 +535,10 @@ function summaryPanel(meta) {
 
 async function main() {
   const meta = JSON.parse(document.getElementById("ngc-meta").textContent);
-  const text = JSON.parse(document.getElementById("ngc-text").textContent);
-  const buffer = await decode(document.getElementById("ngc-data").textContent.trim());
+  const [textBytes, buffer] = await Promise.all([
+    decode(document.getElementById("ngc-text").textContent.trim()),
+    decode(document.getElementById("ngc-data").textContent.trim())]);
+  const text = new TextDecoder("utf-8").decode(textBytes);
   const viewer = new Viewer(meta, text, buffer);
   const textBox = document.getElementById("text");
   viewer.text = new TextPane(textBox, viewer.lines, (line) => viewer.select(line, false), meta.error ? meta.error.line : 0);
@@ -572,7 +623,7 @@ const ready = main().then((viewer) => {
     setTime: (t) => { const s = viewer.setTime(t); viewer.drawNow(); return s && { position: s.position.map((v, k) => v + viewer.meta.origin[k]), line: s.line }; },
     toolPosition: () => viewer.tool.position.toArray().map((v, k) => v + viewer.meta.origin[k]),
     measure: () => viewer.measurement || null,
-    colourBy: (name) => { viewer.colourBy = name; viewer.recolour(); },
+    colourBy: (name) => { viewer.colourBy = name; document.getElementById("colour").value = name; viewer.recolour(); },
   });
   watch();
   return viewer;

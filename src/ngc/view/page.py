@@ -11,6 +11,7 @@ same bytes for the same program and inputs.
 from __future__ import annotations
 
 import base64
+import gzip
 import json
 import math
 from array import array
@@ -236,8 +237,8 @@ def _html(name: str, meta: dict[str, object], text: str, path: PathArrays, lines
     fill = {
         "@TITLE@": _escape_html(name),
         "@META@": _script_json(meta),
-        "@TEXT@": _script_json(text),
-        "@DATA@": base64.b64encode(bytes(blob)).decode("ascii"),
+        "@TEXT@": _packed(text.encode("utf-8", "surrogateescape")),
+        "@DATA@": _packed(bytes(blob)),
         "@THREE_VERSION@": THREE_VERSION,
         "@LICENCE@": licence.replace("--", "- -"),
         "@SCRIPT@": script.replace("</script", "<\\/script"),
@@ -247,6 +248,12 @@ def _html(name: str, meta: dict[str, object], text: str, path: PathArrays, lines
         out = out.replace(key, fill[key])
     head, tail = out.split("@SCRIPT@")
     return (head + fill["@SCRIPT@"] + tail).encode("utf-8", "surrogateescape")
+
+
+def _packed(data: bytes) -> str:
+    """Bytes as the page holds them: gzip (no time stamp: the same bytes each time), base64; the
+    page opens them with the browser's DecompressionStream."""
+    return base64.b64encode(gzip.compress(data, compresslevel=6, mtime=0)).decode("ascii")
 
 
 def _script_json(value: object) -> str:
