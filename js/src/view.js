@@ -141,8 +141,9 @@ class Viewer {
       return lines;
     });
 
+    // (the marks are "transparent" so that they are drawn after the faint rapids, which are)
     this.highlight = new THREE.LineSegments(new THREE.BufferGeometry(),
-      new THREE.LineBasicMaterial({ color: 0xff1f5a, depthTest: false }));
+      new THREE.LineBasicMaterial({ color: 0xff1f5a, depthTest: false, transparent: true }));
     this.highlight.renderOrder = 2;
     this.scene.add(this.highlight);
 
@@ -150,19 +151,19 @@ class Viewer {
     this.scene.add(this.extentsBox());
     this.dimensions(canvasBox);
     const marker = new THREE.Mesh(new THREE.SphereGeometry(size / 120, 16, 12),
-      new THREE.MeshBasicMaterial({ color: 0xffa000, depthTest: false }));
+      new THREE.MeshBasicMaterial({ color: 0xffa000, depthTest: false, transparent: true }));
     marker.renderOrder = 3;
     this.tool = marker;
     this.scene.add(marker);
     if (m.error && m.error.at) {
       const stop = new THREE.Mesh(new THREE.SphereGeometry(size / 90, 16, 12),
-        new THREE.MeshBasicMaterial({ color: 0xe01b24, depthTest: false }));
+        new THREE.MeshBasicMaterial({ color: 0xe01b24, depthTest: false, transparent: true }));
       stop.position.set(...m.error.at);
       stop.renderOrder = 3;
       this.scene.add(stop);
     }
     this.measureLine = new THREE.Line(new THREE.BufferGeometry(),
-      new THREE.LineBasicMaterial({ color: 0x111111, depthTest: false }));
+      new THREE.LineBasicMaterial({ color: 0x111111, depthTest: false, transparent: true }));
     this.measureLine.renderOrder = 4;
     this.scene.add(this.measureLine);
     this.recolour();
@@ -422,13 +423,13 @@ class Viewer {
     };
   }
 
-  setTime(t) {
+  setTime(t, follow = true) { // the slider's time: the tool there, its line selected (follow)
     const total = this.meta.time ? this.meta.time.total : 0;
     this.time = Math.min(Math.max(t, 0), total);
     const s = this.sampleAt(this.time);
     if (s) {
       this.tool.position.set(...s.position);
-      if (s.line && s.line !== this.selected && this.playing) this.select(s.line);
+      if (follow && s.line && s.line !== this.selected) this.select(s.line);
     }
     const slider = document.getElementById("slider");
     if (slider && total > 0) slider.value = String(Math.round(this.time / total * 10000));
@@ -590,8 +591,8 @@ async function main() {
       viewer.select(next);
     }
   });
+  viewer.setTime(meta.time ? meta.time.total : 0, false);
   if (meta.error) viewer.select(meta.error.line);
-  viewer.setTime(meta.time ? meta.time.total : 0);
   viewer.drawNow();
   return viewer;
 }
