@@ -63,7 +63,6 @@ class Viewer {
       const first = this.starts[p], last = p + 1 < this.starts.length ? this.starts[p + 1] : this.points.length / 3;
       for (let i = first; i + 1 < last; i++) this.segStart[s++] = i;
     }
-    this.byLine = null; // line -> its segments, built on first use
     this.selected = 0;
     this.time = meta.time ? meta.time.total : 0;
     this.playing = false;
@@ -73,18 +72,21 @@ class Viewer {
     this.measured = [];
   }
 
-  segmentsOf(line) {
-    if (this.byLine === null) {
-      const map = new Map();
-      for (let i = 0; i < this.count; i++) {
-        const l = this.segLine[i];
-        let list = map.get(l);
-        if (list === undefined) map.set(l, (list = []));
-        list.push(i);
-      }
-      this.byLine = map;
+  segmentsOf(line) { // (built once, by counting: the segments of each line, in order)
+    if (this.lineFirst === undefined) {
+      const n = this.count, lines = this.segLine;
+      let top = 0;
+      for (let i = 0; i < n; i++) if (lines[i] > top) top = lines[i];
+      const first = new Uint32Array(top + 2);
+      for (let i = 0; i < n; i++) first[lines[i] + 1]++;
+      for (let l = 1; l < first.length; l++) first[l] += first[l - 1];
+      const fill = first.slice(0, top + 1), order = new Uint32Array(n);
+      for (let i = 0; i < n; i++) order[fill[lines[i]]++] = i;
+      this.lineFirst = first;
+      this.lineOrder = order;
     }
-    return this.byLine.get(line) || [];
+    if (line < 0 || line + 1 >= this.lineFirst.length) return [];
+    return Array.from(this.lineOrder.subarray(this.lineFirst[line], this.lineFirst[line + 1]));
   }
 
   // -- the 3D scene ----------------------------------------------------------------------------
@@ -126,15 +128,21 @@ class Viewer {
       fill[g]++;
     }
     this.colourSets = [new Float32Array(rapids * 6), new Float32Array((n - rapids) * 6)];
+    this.timeUniform = { value: Infinity };
     this.baseColours = new Float32Array(n * 3);
     this.paths = groups.map((pos, g) => {
       const geometry = new THREE.BufferGeometry();
       geometry.setAttribute("position", new THREE.BufferAttribute(pos, 3));
       geometry.setAttribute("color", new THREE.BufferAttribute(this.colourSets[g], 3));
       geometry.computeBoundingSphere();
+      const times = new Float32Array(pos.length / 3);
+      geometry.setAttribute("t0", new THREE.BufferAttribute(times, 1));
+      this.timeSets = this.timeSets || [];
+      this.timeSets[g] = times;
       const material = g === 0
         ? new THREE.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.35, depthWrite: false })
         : new THREE.LineBasicMaterial({ vertexColors: true });
+      this.fadeWithTime(material);
       const lines = new THREE.LineSegments(geometry, material);
       lines.renderOrder = g === 0 ? 1 : 0;
       this.scene.add(lines);
@@ -174,6 +182,15 @@ class Viewer {
     renderer.domElement.addEventListener("pointerup", (e) => {
       if (this.down && Math.hypot(e.clientX - this.down[0], e.clientY - this.down[1]) < 4) this.click(e);
     });
+  }
+
+  fadeWithTime(material) { // a segment that starts after the slider's time is drawn faded
+    material.onBeforeCompile = (shader) => {
+      shader.uniforms.uTime = this.timeUniform;
+      shader.vertexShader = "attribute float t0;\nuniform float uTime;\n" + shader.vertexShader.replace(
+        "#include <color_vertex>",
+        `#include <color_vertex>\n#ifdef USE_COLOR\nif (t0 > uTime) vColor.rgb = 1.0 - (1.0 - vColor.rgb) * ${FADED.toFixed(2)};\n#endif`);
+    };
   }
 
   axes(size) {
@@ -240,23 +257,22 @@ class Viewer {
     this.shade();
   }
 
-  shade() { // the colours, faded after the slider's time
-    const n = this.count, base = this.baseColours, t = this.time;
+  shade() { // the colours, and each segment's start time (the shader fades the later ones)
+    const n = this.count, base = this.baseColours;
+    const sets = this.colourSets, times = this.timeSets, slot = this.slot, kind = this.segKind;
     const timed = !!this.meta.time;
-    const sets = this.colourSets, slot = this.slot, kind = this.segKind;
     for (let i = 0; i < n; i++) {
-      let f = 1;
-      if (timed) {
-        const t0 = this.lineT0[this.segLine[i]];
-        if (t0 === t0 && t0 > t) f = FADED;
-      }
-      const out = sets[kind[i] === 0 ? 0 : 1], k = slot[i] * 6;
-      const r = 1 - (1 - base[i * 3]) * f, g = 1 - (1 - base[i * 3 + 1]) * f, b = 1 - (1 - base[i * 3 + 2]) * f;
-      out[k] = out[k + 3] = r;
-      out[k + 1] = out[k + 4] = g;
-      out[k + 2] = out[k + 5] = b;
+      const g = kind[i] === 0 ? 0 : 1, out = sets[g], k = slot[i] * 6;
+      out[k] = out[k + 3] = base[i * 3];
+      out[k + 1] = out[k + 4] = base[i * 3 + 1];
+      out[k + 2] = out[k + 5] = base[i * 3 + 2];
+      const t0 = timed ? this.lineT0[this.segLine[i]] : 0;
+      times[g][slot[i] * 2] = times[g][slot[i] * 2 + 1] = t0 === t0 ? t0 : 0;
     }
-    for (const lines of this.paths) lines.geometry.attributes.color.needsUpdate = true;
+    for (const lines of this.paths) {
+      lines.geometry.attributes.color.needsUpdate = true;
+      lines.geometry.attributes.t0.needsUpdate = true;
+    }
     this.draw();
   }
 
@@ -435,7 +451,8 @@ class Viewer {
     if (slider && total > 0) slider.value = String(Math.round(this.time / total * 10000));
     const clockBox = document.getElementById("clock");
     if (clockBox) clockBox.textContent = `${clock(this.time)} / ${clock(total)}, ${clock(total - this.time)} left`;
-    this.shade();
+    this.timeUniform.value = this.meta.time && this.time < total ? this.time : Infinity;
+    this.draw();
     return s;
   }
 
