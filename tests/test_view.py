@@ -257,3 +257,61 @@ def test_watch_reloads_the_page_when_the_file_changes(browser: Any, tmp_path: Pa
             server.kill()
             raise
     assert code == 0
+
+
+def test_the_controls(browser: Any, tmp_path: Path) -> None:
+    """A line of the text lights its segments, the search finds a line, each colour mode has its
+    legend, play moves the time, the help overlay opens with ?, and after the slider the path is
+    faded."""
+    page = _page(ROOT / "examples" / "pocket.ngc", tmp_path / "p.html")
+    o = _open(browser, page.as_uri())
+    # a click on a line of the text: its segments lit, the line marked
+    o.page.locator('.row[data-line="26"]').click()
+    assert o.js("window.ngcView.selected()") == 26
+    assert o.page.locator('[aria-current="true"]').get_attribute("data-line") == "26"
+    assert o.js("window.ngcView.viewer.highlight.geometry.attributes.position.count") == \
+        2 * len(o.js("window.ngcView.segmentsOfLine(26)")) > 0
+    # the search: the next line holding the text
+    o.page.locator("#search").fill("finishing pass")
+    o.page.locator("#search").press("Enter")
+    assert o.page.locator('[aria-current="true"]').inner_text().find("finishing pass") > 0
+    # the colour modes
+    for mode, shown in (("tool", "no tool"), ("feed", "mm/min"), ("speed", "mm/s"), ("kind", "arc")):
+        o.page.locator("#colour").select_option(mode)
+        assert shown in o.page.locator("#legend").inner_text()
+    # play at 100x moves the time on
+    o.page.locator("#slider").fill("0")
+    o.page.locator("#rate").select_option("100")
+    o.page.locator("#play").click()
+    time.sleep(0.6)
+    o.page.locator("#play").click()
+    assert 0 < o.js("window.ngcView.viewer.time") < o.js("window.ngcView.viewer.meta.time.total")
+    # the help overlay
+    o.page.locator("body").press("?")
+    assert o.page.locator("#help").is_visible()
+    o.page.locator("body").press("Escape")
+    assert not o.page.locator("#help").is_visible()
+    # after the slider, the path is faded: the last cut's pixels lighter than at the end
+    last = o.js("""() => { const v = window.ngcView.viewer; for (let i = v.count - 1; i >= 0; i--)
+        if (v.segKind[i] !== 0) return i; return -1; }""")
+    x, y = o.js("(i) => window.ngcView.screenOfSegment(i)", last)
+    o.js("(t) => window.ngcView.setTime(t)", o.js("window.ngcView.viewer.meta.time.total"))
+    full = min(sum(p) for p in _pixels(o, x, y))
+    o.js("() => window.ngcView.setTime(0.1)")
+    faded = min(sum(p) for p in _pixels(o, x, y))
+    assert faded > full + 100
+    assert o.errors == []
+
+
+@pytest.mark.parametrize("size", [(1280, 720), (2560, 1440), (800, 900)])
+def test_laptop_and_large_screens(browser: Any, tmp_path: Path, size: tuple[int, int]) -> None:
+    page = _page(ROOT / "examples" / "pocket.ngc", tmp_path / "p.html")
+    tab = browser.new_page(viewport={"width": size[0], "height": size[1]})
+    errors: list[str] = []
+    tab.on("pageerror", lambda e: errors.append(str(e)))
+    tab.goto(page.as_uri())
+    tab.evaluate("window.ngcView.ready.then(() => true)")
+    box = tab.locator("#canvas canvas").bounding_box()
+    assert box is not None and box["width"] > 200 and box["height"] > 200
+    assert tab.locator("#text .row").count() > 5 and errors == []
+    tab.close()
