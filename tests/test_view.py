@@ -315,3 +315,24 @@ def test_laptop_and_large_screens(browser: Any, tmp_path: Path, size: tuple[int,
     assert box is not None and box["width"] > 200 and box["height"] > 200
     assert tab.locator("#text .row").count() > 5 and errors == []
     tab.close()
+
+
+@pytest.mark.parametrize("name", ["oval.ngc", "trim.ngc"])
+def test_an_engine_program_plays_on_the_engines_times(browser: Any, tmp_path: Path,
+                                                      name: str) -> None:
+    import json
+
+    program = ROOT / "docs" / "engine" / name
+    page = _page(program, tmp_path / "p.html")
+    checked = json.loads(_ngc("check", "--format", "json", str(program)).stdout)
+    o = _open(browser, page.as_uri())
+    total = o.js("window.ngcView.viewer.meta.time.total")
+    assert total == pytest.approx(checked["summary"]["time"], rel=1e-9)
+    # half way, the tool is on the drawn path (within the chords' error)
+    at = o.js("(t) => window.ngcView.setTime(t).position", total / 2)
+    points = o.js("""() => { const v = window.ngcView.viewer, o = v.meta.origin, out = [];
+        for (let i = 0; i < v.points.length; i += 3)
+          out.push([v.points[i] + o[0], v.points[i+1] + o[1], v.points[i+2] + o[2]]);
+        return out; }""")
+    assert min(math.dist(at, p) for p in points) < 0.05
+    assert o.errors == []

@@ -109,26 +109,35 @@ def build_page(text: str, name: str, new_interpreter: Callable[[Sink], Interpret
         if machine.travel:
             watch = LimitWatch(machine.travel, toolpath)
             tee.readers.append(watch)
-    error = _run(text, name, toolpath, new_interpreter, engine, engine_dialect, max_iterations)
-    result = None
+    clock = _EngineClock(toolpath, lines) if engine_dialect else None
+    error = _run(text, name, toolpath if clock is None else clock, new_interpreter, engine,
+                 engine_dialect, max_iterations)
+    result: object = None
+    if clock is not None:
+        result = clock.result()
     if timer is not None:
         try:
             result = timer.finish()
         except NgcError:  # (a program that stopped may leave the planner nothing to finish)
             result = None
     rows = _Rows()
-    if result is not None and machine is not None and result.total_s > 0.0:
-        rows = _trajectory(text, name, new_interpreter, machine, result.total_s)
+    if clock is not None:
+        rows = clock.trajectory()
+    elif result is not None and machine is not None and result.total_s > 0.0:  # type: ignore[attr-defined]
+        rows = _trajectory(text, name, new_interpreter, machine,
+                           result.total_s)  # type: ignore[attr-defined]
     warnings = tuple(e.text(units) for e in (watch.excesses() if watch else ()))
-    meta = _meta(name, units, path, result, machine, error, toolpath, warnings)
+    meta = _meta(name, units, path, result, machine, error, toolpath, warnings,
+                 "the engine's own times" if clock is not None else None)
     meta["view"] = view
     html = _html(name, meta, text, path, lines, rows)
-    return Page(html, path.count, error, None if result is None else result.total_s, warnings)
+    total = None if result is None else float(result.total_s)  # type: ignore[attr-defined]
+    return Page(html, path.count, error, total, warnings)
 
 
-def _run(text: str, name: str, toolpath: Toolpath, new_interpreter: Callable[[Sink], Interpreter],
-         engine: EngineSetup | None, engine_dialect: bool, max_iterations: int | None
-         ) -> NgcError | None:
+def _run(text: str, name: str, toolpath: Toolpath | _EngineClock,
+         new_interpreter: Callable[[Sink], Interpreter], engine: EngineSetup | None,
+         engine_dialect: bool, max_iterations: int | None) -> NgcError | None:
     try:
         if engine_dialect:
             from .. import dialects
@@ -136,12 +145,85 @@ def _run(text: str, name: str, toolpath: Toolpath, new_interpreter: Callable[[Si
             kwargs = {} if max_iterations is None else {"max_iterations": max_iterations}
             dialects.interpret_engine(text, toolpath, setup=engine, file=name, **kwargs)
         else:
+            assert isinstance(toolpath, Toolpath)
             interp = new_interpreter(toolpath)
             interp.startup()
             interp.run(text.splitlines(), file=name)
     except NgcError as exc:
         return exc
     return None
+
+
+class _Timed(NamedTuple):
+    total_s: float
+    by_tool: dict[int, float]
+
+
+class _EngineClock:
+    """The sink of an engine-dialect run that keeps its own times (each segment runs its
+    duration, each dwell its seconds: what ``ngc check`` sums) before handing each operation to
+    the toolpath: each line's start and greatest speed, and the trajectory along the segments'
+    cubics."""
+
+    def __init__(self, toolpath: Toolpath, lines: _Lines) -> None:
+        self.toolpath = toolpath
+        self.lines = lines
+        self.t = 0.0
+        self.starts = array("d")
+        self.pieces: list[tuple[float, list[tuple[float, float, float, float]], int]] = []
+
+    def emit(self, op: object, label: str, line: int) -> None:
+        from ..engine import Dwell, EngineSegment
+        from ..engine.bezier import length
+
+        if isinstance(op, EngineSegment):
+            held = self.toolpath.pos
+            cubics = [tuple(op.axes[a]) if a in op.axes else (held[i],) * 4
+                      for i, a in enumerate("XYZ")]
+            duration = max(op.duration, 0.0)
+            lines = self.lines
+            if 0 <= line < len(lines.t0):
+                if not lines.t0[line] <= self.t:
+                    lines.t0[line] = self.t
+                if duration > 0.0:
+                    speed = length(cubics) / duration  # type: ignore[arg-type]
+                    if speed > lines.speed[line]:
+                        lines.speed[line] = speed
+            self.starts.append(self.t)
+            self.pieces.append((duration, cubics, line))  # type: ignore[arg-type]
+            self.t += duration
+        elif isinstance(op, Dwell):
+            self.t += max(op.seconds, 0.0)
+        self.toolpath.emit(op, label, line)  # type: ignore[arg-type]
+
+    def flush(self) -> None:
+        self.toolpath.flush()
+
+    def print_text(self, text: str) -> None:
+        """Engine programs print nothing the page shows."""
+
+    def result(self) -> _Timed:
+        return _Timed(self.t, {0: self.t} if self.t > 0.0 else {})
+
+    def trajectory(self) -> _Rows:
+        """Samples evenly spaced in time, each on its segment's cubics."""
+        import bisect
+
+        rows = _Rows()
+        total = self.t
+        if total <= 0.0 or not self.pieces:
+            return rows
+        n = MAX_SAMPLES
+        for k in range(n):
+            t = total * k / (n - 1)
+            i = max(0, bisect.bisect_right(self.starts, t) - 1)
+            duration, cubics, line = self.pieces[i]
+            u = 1.0 if duration <= 0.0 else min(max((t - self.starts[i]) / duration, 0.0), 1.0)
+            v = 1.0 - u
+            w = (v * v * v, 3.0 * v * v * u, 3.0 * v * u * u, u * u * u)
+            rows.values.extend((t, *(sum(w[j] * c[j] for j in range(4)) for c in cubics),
+                                float(line)))
+        return rows
 
 
 def _trajectory(text: str, name: str, new_interpreter: Callable[[Sink], Interpreter],
@@ -169,7 +251,8 @@ def _trajectory(text: str, name: str, new_interpreter: Callable[[Sink], Interpre
 
 
 def _meta(name: str, units: str, path: PathArrays, result: object, machine: Machine | None,
-          error: NgcError | None, toolpath: Toolpath, warnings: Sequence[str]) -> dict[str, object]:
+          error: NgcError | None, toolpath: Toolpath, warnings: Sequence[str],
+          timed_by: str | None = None) -> dict[str, object]:
     low, high = path.extents()
     origin = [(lo + hi) / 2.0 for lo, hi in zip(low, high, strict=True)]
     size = [hi - lo for lo, hi in zip(low, high, strict=True)]
@@ -180,10 +263,11 @@ def _meta(name: str, units: str, path: PathArrays, result: object, machine: Mach
         "warnings": list(warnings), "time": None, "error": None, "tools": [],
     }
     by_tool: dict[int, float] = {}
-    if result is not None and machine is not None:
+    if result is not None and (machine is not None or timed_by is not None):
         by_tool = dict(result.by_tool)  # type: ignore[attr-defined]
+        on = timed_by if machine is None else f"the {machine.linear_units} machine"
         meta["time"] = {"total": result.total_s,  # type: ignore[attr-defined]
-                        "machine": f"the {machine.linear_units} machine",
+                        "machine": on,
                         "by_tool": {("no tool" if t == 0 else f"T{t}"): s
                                     for t, s in sorted(by_tool.items())}}
     meta["tools"] = [
