@@ -120,7 +120,7 @@ def _write_bytes_as_read() -> None:
 
 # the module that runs each command (``ngc.commands``), by its name
 RUNNERS = {"canon": "canon", "check": "check_run", "time": "time_run", "plot": "plot_run",
-           "view": "view_run"}
+           "view": "view_run", "flatten": "flatten_run"}
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -172,6 +172,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_time(sub, [_machine_options()])
     _add_plot(sub, [_machine_options(), _dialect_options()])
     _add_view(sub, [_machine_options(), _dialect_options()])
+    _add_flatten(sub, [_machine_options(), _dialect_options()])
     return parser
 
 
@@ -209,6 +210,35 @@ def _add_plot(sub: argparse._SubParsersAction[argparse.ArgumentParser],
 
 
 VIEW_NAMES = ("top", "front", "side", "iso", "lathe")
+
+
+def _add_flatten(sub: argparse._SubParsersAction[argparse.ArgumentParser],
+                 parents: list[argparse.ArgumentParser]) -> None:
+    flat = sub.add_parser(
+        "flatten", parents=parents, help="write the program plain for a simpler controller",
+        description="Write the program out plain (no parameters, O-words, cycles or "
+        "compensation: G0 G1 G2 G3 in the coordinates of the work offset the operator set, "
+        "G43 H where a tool's length is the table's), then run what was written and compare "
+        "its machine path with the original's. A program that cannot be written truthfully "
+        "(probing, ...) is refused with its line; nothing is written then.",
+        epilog=PROGRAM_HELP,
+    )
+    flat.add_argument("file", metavar="FILE", help="the program (- for standard input)")
+    flat.add_argument("-o", "--output", metavar="OUT", default=None,
+                      help="write the program to OUT (default, or -: standard output)")
+    flat.add_argument("--target", default="linuxcnc",
+                      choices=("linuxcnc", "grbl", "grblhal", "fluidnc"),
+                      help="the controller (written so far: linuxcnc)")
+    flat.add_argument("--units", choices=("mm", "inch"), default="mm",
+                      help="the units the program is written in (default mm)")
+    flat.add_argument("--decimals", type=int, default=None,
+                      help="decimals of the numbers (default: the target's for the units)")
+    flat.add_argument("--tolerance", type=float, default=0.002,
+                      help="mm: the largest difference of the paths that verifies (default 0.002)")
+    flat.add_argument("--source-lines", action="store_true",
+                      help="a (line N) comment on each line, the line of the program it comes from")
+    flat.add_argument("--no-verify", action="store_true",
+                      help="do not run what was written to compare the paths")
 
 
 def _add_view(sub: argparse._SubParsersAction[argparse.ArgumentParser],

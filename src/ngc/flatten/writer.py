@@ -1,0 +1,320 @@
+"""A program written out plain: a reader of the toolpath (:mod:`ngc.toolpath`) that writes each
+move as a G0, G1, G2 or G3 line in the coordinates of the work offset the operator set.
+
+What the operator sets at the machine stays a reference: the work offset (G54-G59.3) the
+program selects, with the origin it had when the program started (the parameter file's), and a
+tool length that is a tool's in the table (``G43 H<tool>``).  What the program computes is
+resolved into the coordinates: parameters and expressions, O-words, loops, canned and lathe
+cycles and cutter compensation (canon has them as moves already), offsets the program sets
+(G10, G92, G52), XY rotation and unit switches.  What cannot be written truthfully is refused
+(:class:`Refused`): probing, spindle-synchronised motion, rigid tapping, NURBS and anything this
+writer does not know yet.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from typing import TextIO
+
+from ..canon import ops
+from ..config.tooltable import ToolEntry
+from ..toolpath.frame import Pos
+from ..toolpath.tracker import FEED, PROBE, RAPID, SYNC, ArcMove, Cubics, Toolpath
+from .targets import Target
+
+MM_PER_INCH = 25.4
+SYSTEMS = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
+AXES = "XYZABC"
+LINEAR = (True, True, True, False, False, False)
+# Canon operations that change nothing the output must say: resolved into the coordinates or
+# said by the moves themselves.
+RESOLVED = frozenset({
+    ops.UseLengthUnits, ops.SelectPlane, ops.SetG92Offset, ops.SetXYRotation,
+    ops.SetFeedReference, ops.StartChange, ops.EnableFeedOverride, ops.DisableFeedOverride,
+    ops.EnableSpeedOverride, ops.DisableSpeedOverride, ops.EnableAdaptiveFeed,
+    ops.DisableAdaptiveFeed, ops.EnableFeedHold, ops.DisableFeedHold, ops.SetToolTableEntry,
+    ops.ReloadTooldata, ops.OnReset, ops.Finish, ops.LogOpen, ops.LogAppend, ops.Log,
+    ops.LogClose, ops.TurnProbeOn, ops.TurnProbeOff,
+})
+
+
+class Refused(Exception):
+    """A program that cannot be flattened truthfully: the line and the reason."""
+
+    def __init__(self, line: int, reason: str) -> None:
+        super().__init__(f"line {line}: {reason}")
+        self.line = line
+        self.reason = reason
+
+
+class Flattener:
+    """The toolpath's reader that writes the plain program to ``out``.
+
+    ``origins`` are the work offsets' origins when the program started (machine coordinates, mm,
+    X Y Z A B C, by system 1-9) and ``system`` the one selected then; ``tool`` finds a tool's
+    entry in the table (lengths in mm); ``inch`` writes in inches (else mm)."""
+
+    def __init__(self, toolpath: Toolpath, out: TextIO, target: Target, *,
+                 origins: Sequence[Sequence[float]], system: int,
+                 tool: Callable[[int], ToolEntry | None], inch: bool = False,
+                 decimals: int | None = None, source_lines: bool = False) -> None:
+        self.toolpath = toolpath
+        self.out = out
+        self.target = target
+        self.origins = origins
+        self.system = system
+        self.tool_entry = tool
+        self.inch = inch
+        self.scale = MM_PER_INCH if inch else 1.0
+        self.decimals = decimals if decimals is not None else (
+            target.decimals_inch if inch else target.decimals_mm)
+        self.source_lines = source_lines
+        self.kept: int | None = None  # the tool whose length G43 H applies
+        self.kept_offset: Pos = (0.0,) * 6
+        self.motion = ""
+        self.feed_mm = 0.0  # the feed now, mm per minute (or per revolution)
+        self.feed_written: str | None = None
+        self.per_rev = False
+        self.per_rev_written = False
+        self.selected = 0
+        self.naive = 0.0
+        self.where: list[float | None] = [None] * 6  # the output's current position (as written)
+        self.lines = 0
+        self.plane = "G17"
+        self.ended = False  # M2 or M30 written
+
+    # -- writing ------------------------------------------------------------------------------
+    def write(self, text: str, line: int = 0) -> None:
+        if self.source_lines and line:
+            text = f"{text} (line {line})"
+        self.out.write(text + "\n")
+        self.lines += 1
+
+    def header(self, name: str) -> None:
+        self.write(f"(flattened by ngc from {_comment_text(name)} for {self.target.name})")
+        self.write(f"{'G20' if self.inch else 'G21'} G90 G91.1 G94 G40 G49 G80 G17 G97")
+        self.write(SYSTEMS[self.system - 1])
+
+    def _number(self, v: float) -> str:
+        text = f"{v:.{self.decimals}f}"
+        if "." in text:
+            text = text.rstrip("0").rstrip(".")
+        return "0" if text in ("-0", "") else text
+
+    def _coordinates(self, p: Sequence[float], line: int) -> list[float]:
+        """A machine point (mm, degrees) in the output's coordinates and units."""
+        origin = self.origins[self.system - 1]
+        out = []
+        for i in range(6):
+            v = p[i] - origin[i] - self.kept_offset[i]
+            if LINEAR[i]:
+                v /= self.scale
+            if not math.isfinite(v):
+                raise Refused(line, "a coordinate past a double's range")
+            out.append(v)
+        return out
+
+    def _axes(self, q: Sequence[float], force: bool = False) -> str:
+        """The axis words that change (``force``: X Y Z whatever; A B C only once they are
+        away from 0, so that a program for three axes has no rotary word)."""
+        words = []
+        for i, axis in enumerate(AXES):
+            text = self._number(q[i])
+            value = float(text)
+            was = self.where[i]
+            if i >= 3 and was is None and value == 0.0:
+                self.where[i] = 0.0
+                continue
+            if (force and i < 3) or was != value:
+                words.append(f"{axis}{text}")
+                self.where[i] = value
+        return " ".join(words)
+
+    def _feed_words(self) -> str:
+        words = []
+        if self.per_rev != self.per_rev_written:
+            words.append("G95" if self.per_rev else "G94")
+            self.per_rev_written = self.per_rev
+        rate = self._number(self.feed_mm / self.scale)
+        if rate != self.feed_written:
+            words.append(f"F{rate}")
+            self.feed_written = rate
+        return " ".join(words)
+
+    # -- the toolpath's consumer protocol -----------------------------------------------------
+    def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
+        if kind == PROBE:
+            raise Refused(line, "probing: where the probe stops is known only at the machine")
+        if kind == SYNC:
+            raise Refused(line, "spindle-synchronised motion (G33, G76) is not flattened yet")
+        q = self._coordinates(end, line)
+        code = "G0" if kind == RAPID else "G1"
+        axes = self._axes(q)
+        words = [code]
+        if kind == FEED:
+            feed = self._feed_words()
+            if feed:
+                words.append(feed)
+        if not axes:
+            axes = self._axes(q, force=True)  # (a move of no length still goes in)
+        words.append(axes)
+        self.write(" ".join(words), line)
+
+    def arc(self, arc: ArcMove, line: int) -> None:
+        n = arc.normal
+        plane = {(0, 0, 1): ("G17", 0, 1), (0, 1, 0): ("G18", 2, 0), (1, 0, 0): ("G19", 1, 2)}
+        sign = 1
+        key = tuple(round(v) for v in n)
+        if key not in plane:
+            negated = tuple(-v for v in key)
+            if negated not in plane or max(abs(v) for v in n) < 1.0 - 1e-9:
+                raise Refused(line, "an arc in a plane the target lacks (a rotated plane)")
+            key, sign = negated, -1
+        code, _first, _second = plane[key]
+        turns = arc.turns * sign
+        if abs(turns) > 1 and not self.target.turns:
+            raise Refused(line, "an arc of several turns is not split yet for this target")
+        s = self._coordinates(arc.start, line)
+        q = self._coordinates(arc.end, line)
+        c = self._coordinates((*arc.centre, 0.0, 0.0, 0.0), line)
+        offsets = {"G17": (("I", 0), ("J", 1)), "G18": (("I", 0), ("K", 2)),
+                   "G19": (("J", 1), ("K", 2))}[code]
+        words = [] if code == self.plane else [code]
+        self.plane = code
+        words.append("G3" if turns > 0 else "G2")
+        feed = self._feed_words()
+        if feed:
+            words.append(feed)
+        axes = self._axes(q, force=True)
+        words.append(axes)
+        words.extend(f"{letter}{self._number(c[i] - s[i])}" for letter, i in offsets)
+        if abs(turns) > 1:
+            words.append(f"P{abs(turns)}")
+        self.write(" ".join(words), line)
+
+    def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
+        raise Refused(line, "NURBS (G5.2) are not flattened yet")
+
+    def tap(self, start: Pos, bottom: Pos, line: int) -> None:
+        raise Refused(line, "rigid tapping (G33.1) is not flattened yet")
+
+    def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
+        raise Refused(line, "engine-dialect programs are not flattened yet")
+
+    def other(self, op: ops.Op, line: int) -> None:
+        kind = type(op)
+        if kind in RESOLVED:
+            return
+        if kind is ops.SetG5xOffset:
+            system = op.system  # type: ignore[attr-defined]
+            if system != self.system:
+                self.system = system
+                self.where = [None] * 6
+                self.write(SYSTEMS[system - 1], line)
+        elif kind is ops.UseToolLengthOffset:
+            self._tool_length(line)
+        elif kind is ops.SetFeedRate:
+            frame = self.toolpath.frame
+            self.feed_mm = op.rate * (MM_PER_INCH if frame.inch_program else 1.0)  # type: ignore[attr-defined]
+        elif kind is ops.SetFeedMode:
+            self.per_rev = op.mode == 1  # type: ignore[attr-defined]
+            if self.per_rev and not self.target.feed_per_rev:
+                raise Refused(line, "feed per revolution (G95) for a target without it")
+        elif kind is ops.SetMotionControlMode:
+            mode = op.mode  # type: ignore[attr-defined]
+            if self.target.blending and mode in ("CANON_EXACT_STOP", "CANON_EXACT_PATH"):
+                self.write("G61.1" if mode == "CANON_EXACT_STOP" else "G61", line)
+        elif kind is ops.SetNaivecamTolerance:
+            self.naive = op.tolerance  # type: ignore[attr-defined]
+        elif kind is ops.SetMotionControlContinuous:
+            if self.target.blending:
+                tolerance = op.tolerance * self._program_mm() / self.scale  # type: ignore[attr-defined]
+                naive = self.naive * self._program_mm() / self.scale
+                self.write(f"G64 P{self._number(tolerance)} Q{self._number(naive)}", line)
+        elif kind is ops.SetSpindleSpeed:
+            self.write(f"S{self._number(op.rpm)}", line)  # type: ignore[attr-defined]
+        elif kind is ops.StartSpindleClockwise:
+            self.write("M3", line)
+        elif kind is ops.StartSpindleCounterclockwise:
+            self.write("M4", line)
+        elif kind is ops.StopSpindleTurning:
+            self.write("M5", line)
+        elif kind is ops.SetSpindleMode:
+            css = op.css_max  # type: ignore[attr-defined]
+            if css > 0.0:
+                raise Refused(line, "constant surface speed (G96) is not flattened yet")
+        elif kind is ops.SelectTool:
+            self.selected = op.tool  # type: ignore[attr-defined]
+        elif kind is ops.ChangeTool:
+            if self.target.tool_change:
+                self.write(f"M6 T{self.selected}", line)
+        elif kind is ops.ChangeToolNumber:
+            if self.target.tool_change:
+                self.write(f"M61 Q{self.selected}", line)
+        elif kind is ops.Dwell:
+            self.write(f"G4 P{self._number(op.seconds)}", line)  # type: ignore[attr-defined]
+        elif kind is ops.FloodOn:
+            self.write("M8", line)
+        elif kind is ops.MistOn:
+            self.write("M7", line)
+        elif kind in (ops.FloodOff, ops.MistOff):
+            self.write("M9", line)
+        elif kind is ops.Comment:
+            text = op.text  # type: ignore[attr-defined]
+            if not text.startswith("interpreter: "):  # (rs274's notes of its own changes)
+                self.write(f"({_comment_text(text)})", line)
+        elif kind is ops.Message:
+            self.write(f"(MSG,{_comment_text(op.text)})", line)  # type: ignore[attr-defined]
+        elif kind is ops.ProgramStop:
+            self.write("M0", line)
+        elif kind is ops.OptionalProgramStop:
+            self.write("M1", line)
+        elif kind is ops.ProgramEnd:
+            self.write("M2", line)
+            self.ended = True
+        elif kind is ops.PalletShuttle and self.target.tool_change:
+            self.write("M60", line)
+        else:
+            name = kind.__name__
+            raise Refused(line, f"{name} is not flattened yet")
+
+    def finish(self) -> None:
+        """Nothing is held back."""
+
+    # -- tool length ----------------------------------------------------------------------------
+    def _program_mm(self) -> float:
+        return MM_PER_INCH if self.toolpath.frame.inch_program else 1.0
+
+    def _tool_length(self, line: int) -> None:
+        """The tool length offset now: a tool's in the table stays ``G43 H<tool>``; any other
+        is folded into the coordinates."""
+        tlo = self.toolpath.frame.tlo  # machine units (mm)
+        if not any(tlo):
+            if self.kept is not None:
+                self.write("G49", line)
+            self.kept, self.kept_offset = None, (0.0,) * 6
+            return
+        if self.target.tool_length == "G43 H":
+            for number in (self.toolpath.tool, self.selected):
+                entry = self.tool_entry(number) if number > 0 else None
+                if entry is not None and _same(entry.offsets[:6], tlo):
+                    if self.kept != number:
+                        self.write(f"G43 H{number}", line)
+                    self.kept = number
+                    self.kept_offset = tuple(entry.offsets[:6])  # type: ignore[assignment]
+                    self.where = [None] * 6
+                    return
+        if self.kept is not None:
+            self.write("G49", line)
+        self.kept, self.kept_offset = None, (0.0,) * 6
+        self.where = [None] * 6
+
+
+def _same(a: Sequence[float], b: Sequence[float]) -> bool:
+    return all(abs(x - y) <= 1e-9 * max(1.0, abs(x)) for x, y in zip(a, b, strict=True))
+
+
+def _comment_text(text: str) -> str:
+    """Text a comment can hold: no parentheses, no line breaks."""
+    return text.replace("(", "[").replace(")", "]").replace("\n", " ").replace("\r", " ")

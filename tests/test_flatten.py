@@ -1,0 +1,91 @@
+"""``ngc flatten --target linuxcnc``: the program written plain, run again and its machine path
+compared with the original's; refusals say the line and the reason and write nothing."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+PROGRAMS = [*sorted((ROOT / "tests" / "golden" / "plot").glob("*.ngc")),
+            ROOT / "examples" / "pocket.ngc"]
+NOT_PLAIN = re.compile(r"[#\[\]]|\bO\d|\bO<|\bG(?:7[0-6]|8[1-9]|4[12](?:\.1)?|5\.[1-3]|52|92|10)\b",
+                       re.IGNORECASE)
+
+
+def _ngc(*argv: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "ngc", *argv], capture_output=True, text=True,
+                          timeout=300, cwd=cwd)
+
+
+def _code(text: str) -> str:
+    return "\n".join(re.sub(r"\([^)]*\)", "", line) for line in text.splitlines())
+
+
+@pytest.mark.parametrize("program", PROGRAMS, ids=[p.name for p in PROGRAMS])
+def test_flattened_programs_are_plain_and_verified(tmp_path: Path, program: Path) -> None:
+    out = tmp_path / "flat.ngc"
+    done = _ngc("flatten", str(program), "-o", str(out))
+    if done.returncode == 1 and "refused" in done.stderr:
+        assert not out.exists()  # nothing written
+        assert re.search(r":\d+: ngc flatten: refused: ", done.stderr)
+        return
+    if "error-stop" in program.name:  # (a program error: flatten stops on it, as check does)
+        assert done.returncode == 1 and not out.exists()
+        return
+    assert done.returncode == 0, done.stderr
+    assert "verified" in done.stderr and "largest deviation 0.00" in done.stderr
+    text = out.read_text()
+    assert not NOT_PLAIN.search(_code(text)), NOT_PLAIN.search(_code(text))
+    # what was written flattens again, verified, to the same moves
+    again = _ngc("flatten", str(out))
+    assert again.returncode == 0, again.stderr
+    moves = re.compile(r"^(?:G1[789] )?G[0-3]\b.*$", re.MULTILINE)
+    assert moves.findall(_code(again.stdout)) == moves.findall(_code(text))
+
+
+def test_offsets_the_program_sets_are_resolved_and_the_operators_kept(tmp_path: Path) -> None:
+    (tmp_path / "p.ngc").write_text(
+        "G21 G90\nG10 L2 P2 X100 Y50\nG55\nG0 X1 Y2 Z3\nG92 X0\nG1 X5 F100\nG92.1\n"
+        "G52 Y10\nG1 Y0\nG52 Y0\nT1 M6\nG43\nG1 Z-1\nG49\nM2\n")
+    (tmp_path / "t.tbl").write_text("T1 P1 Z1.0 D0.25\n")
+    done = _ngc("flatten", "-t", "t.tbl", "p.ngc", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    lines = _code(done.stdout).split("\n")
+    body = [line.strip() for line in lines if line.strip()]
+    assert "G55" in body  # the operator's work offset: still a reference
+    assert "G0 X101 Y52 Z3" in body  # the program's G10 L2 P2 resolved (G55's own origin is 0)
+    assert "G1 F100 X106" in body  # G92 X0 at X1: X5 is 4 further
+    assert "G1 Y60" in body  # G52 Y10 at Y0: resolved
+    assert "G43 H1" in body and "G49" in body  # the table's tool length: a reference
+
+
+def test_a_probe_is_refused_and_nothing_is_written(tmp_path: Path) -> None:
+    (tmp_path / "p.ngc").write_text("G21\nG0 Z5\nG38.2 Z-10 F100\nM2\n")
+    done = _ngc("flatten", "p.ngc", "-o", "out.ngc", cwd=tmp_path)
+    assert done.returncode == 1 and not (tmp_path / "out.ngc").exists()
+    assert done.stderr == ("p.ngc:3: ngc flatten: refused: probing: where the probe stops is "
+                           "known only at the machine\n")
+
+
+def test_a_target_not_written_yet_says_so(tmp_path: Path) -> None:
+    done = _ngc("flatten", "--target", "grbl", str(ROOT / "examples" / "pocket.ngc"))
+    assert done.returncode == 2
+    assert done.stderr == ("ngc flatten: --target grbl is not supported yet (written: "
+                           "linuxcnc)\n")
+
+
+def test_source_lines_percent_and_inch(tmp_path: Path) -> None:
+    (tmp_path / "p.ngc").write_text("%\nG20\n#1 = 2\nG1 X#1 F10\n%\n")
+    done = _ngc("flatten", "--source-lines", "--units", "inch", "p.ngc", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert lines[0] == "%" and lines[-1] == "%"
+    assert "G1 F10 X2 Y0 Z0 (line 4)" in lines  # (the first move names every axis)
+    assert "G20 G90 G91.1 G94 G40 G49 G80 G17 G97" in lines
+    done = _ngc("flatten", "p.ngc", cwd=tmp_path)  # in mm
+    assert "G1 F254 X50.8 Y0 Z0" in done.stdout.splitlines()
