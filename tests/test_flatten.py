@@ -89,3 +89,22 @@ def test_source_lines_percent_and_inch(tmp_path: Path) -> None:
     assert "G20 G90 G91.1 G94 G40 G49 G80 G17 G97" in lines
     done = _ngc("flatten", "p.ngc", cwd=tmp_path)  # in mm
     assert "G1 F254 X50.8 Y0 Z0" in done.stdout.splitlines()
+
+
+def test_a_tool_length_the_program_changes_is_folded(tmp_path: Path) -> None:
+    """G10 L1 in the program changes the interpreter's table, not the machine's: the length the
+    program set is folded into the coordinates, the table's stays G43 H."""
+    (tmp_path / "p.ngc").write_text("G21\nT1 M6\nG43\nG0 Z0\nG10 L1 P1 Z30\nG43\nG0 Z0\nG49\nM2\n")
+    (tmp_path / "t.tbl").write_text("T1 P1 Z1.0\n")
+    done = _ngc("flatten", "-t", "t.tbl", "p.ngc", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    body = [line for line in _code(done.stdout).splitlines() if line.strip()]
+    assert body[body.index("G43 H1") + 1].startswith("G0 ") and "G49" in body
+    assert "G0 X0 Y0 Z30" in body  # (Z0 with the 30 mm length the program set: folded)
+
+
+def test_an_arc_turned_off_the_axes_is_refused(tmp_path: Path) -> None:
+    (tmp_path / "p.ngc").write_text("G21 G18\nG10 L2 P1 R30\nG0 X0 Z0\nG2 X2 Z0 I1 K0 F100\nM2\n")
+    done = _ngc("flatten", "p.ngc", cwd=tmp_path)
+    assert done.returncode == 1
+    assert "p.ngc:4: ngc flatten: refused: an arc in a plane the XY rotation turns off" in done.stderr

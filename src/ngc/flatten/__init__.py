@@ -53,22 +53,28 @@ class _Path:
     """A reader of the toolpath keeping each move's kind, end, and an arc's centre and turns."""
 
     def __init__(self) -> None:
-        self.moves: list[tuple[str, Pos, tuple[float, ...] | None, int, int]] = []
+        # kind, end, an arc's centre, its turns, line, and its axis: the normal, pointing so
+        # that the arc turns counterclockwise about it (an arc about -X turning one way is the
+        # same arc as one about +X turning the other)
+        self.moves: list[tuple[str, Pos, tuple[float, ...] | None, int, int,
+                               tuple[float, ...] | None]] = []
 
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
-        self.moves.append((kind, end, None, 0, line))
+        self.moves.append((kind, end, None, 0, line, None))
 
     def arc(self, arc: ArcMove, line: int) -> None:
-        self.moves.append((ARC, arc.end, arc.centre, arc.turns, line))
+        sign = 1.0 if arc.turns > 0 else -1.0
+        axis = tuple(sign * v for v in arc.normal)
+        self.moves.append((ARC, arc.end, arc.centre, abs(arc.turns), line, axis))
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
-        self.moves.append(("nurbs", start, None, 0, line))
+        self.moves.append(("nurbs", start, None, 0, line, None))
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
-        self.moves.append(("tap", bottom, None, 0, line))
+        self.moves.append(("tap", bottom, None, 0, line, None))
 
     def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
-        self.moves.append(("bezier", start, None, 0, line))
+        self.moves.append(("bezier", start, None, 0, line, None))
 
     def other(self, op: ops.Op, line: int) -> None:
         """Only the moves are compared."""
@@ -94,9 +100,10 @@ def flatten(text: str, name: str, new_interpreter: Callable[[Sink], Interpreter]
     out = io.StringIO()
     interp = new_interpreter(toolpath)
     origins, system = _origins(interp, 0)
-    slots = interp.machine.state.tools.slots
+    slots = list(interp.machine.state.tools.slots)  # (the operator's table: G10 L1 in the
+    # program changes the interpreter's copy, not what the machine will have)
 
-    def tool(number: int) -> ToolEntry | None:  # (the table as the program left it, in mm)
+    def tool(number: int) -> ToolEntry | None:  # (in mm)
         entry = next((e for e in slots[1:] if e.number == number), None)
         if entry is None:
             return None
@@ -154,7 +161,10 @@ def _verify(original: _Path, written: str, new_interpreter: Callable[[Sink], Int
             return Verified(i, worst, f"move {i + 1} (line {m[4]}): a {m[0]} became a {n[0]}")
         worst = max(worst, math.dist(m[1][:3], n[1][:3]),
                     max(abs(x - y) for x, y in zip(m[1][3:], n[1][3:], strict=True)))
-        if m[2] is not None and n[2] is not None:
+        if m[2] is not None and n[2] is not None and m[5] is not None and n[5] is not None:
+            if math.dist(m[5], n[5]) > 1e-9:
+                return Verified(i, worst, f"move {i + 1} (line {m[4]}): the arc turns the "
+                                "other way")
             worst = max(worst, math.dist(m[2], n[2]))
     if len(a) != len(b):
         return Verified(min(len(a), len(b)), worst,

@@ -165,12 +165,12 @@ class Flattener:
         n = arc.normal
         plane = {(0, 0, 1): ("G17", 0, 1), (0, 1, 0): ("G18", 2, 0), (1, 0, 0): ("G19", 1, 2)}
         sign = 1
-        key = tuple(round(v) for v in n)
+        key = (round(n[0]), round(n[1]), round(n[2]))
+        if max(abs(v) for v in n) < 1.0 - 1e-12:
+            raise Refused(line, "an arc in a plane the XY rotation turns off the axes (G18 or "
+                          "G19 under G10 L2 R): it is not written as lines yet")
         if key not in plane:
-            negated = tuple(-v for v in key)
-            if negated not in plane or max(abs(v) for v in n) < 1.0 - 1e-9:
-                raise Refused(line, "an arc in a plane the target lacks (a rotated plane)")
-            key, sign = negated, -1
+            key, sign = (-key[0], -key[1], -key[2]), -1
         code, _first, _second = plane[key]
         turns = arc.turns * sign
         if abs(turns) > 1 and not self.target.turns:
