@@ -108,3 +108,16 @@ def test_an_arc_turned_off_the_axes_is_refused(tmp_path: Path) -> None:
     done = _ngc("flatten", "p.ngc", cwd=tmp_path)
     assert done.returncode == 1
     assert "p.ngc:4: ngc flatten: refused: an arc in a plane the XY rotation turns off" in done.stderr
+
+
+def test_the_library() -> None:
+    import ngc
+
+    result = ngc.Program.load(str(ROOT / "examples" / "pocket.ngc")).flatten(source_lines=True)
+    assert result.verified is not None and result.verified.difference is None
+    assert result.verified.deviation < 1e-3 and "(line 9)" in result.text
+    from ngc.flatten import Refused
+
+    with pytest.raises(Refused) as caught:
+        ngc.Program.load("G21\nG38.2 Z-1 F10\nM2\n").flatten()
+    assert caught.value.line == 2

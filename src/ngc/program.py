@@ -27,6 +27,7 @@ from .toolpath.moves import Event, Move, MoveList
 
 if TYPE_CHECKING:
     from .commands.check import CheckResult
+    from .flatten import Flattened
     from .planner.machine import Machine
     from .planner.timing import TimeResult
 
@@ -175,6 +176,22 @@ class Program:
             self._draw(path, how)
             with open(path, encoding="utf-8") as handle:
                 return handle.read()
+
+    def flatten(self, target: str = "linuxcnc", *, inch: bool = False,
+                decimals: int | None = None, source_lines: bool = False,
+                verify: bool = True) -> Flattened:
+        """The program written plain for ``target`` (see ``ngc flatten``): ``text``, ``lines``
+        and ``verified`` (the written program run again and its machine path compared with
+        this one's).  Raises :class:`~ngc.flatten.Refused` with the line and the reason for a
+        program that cannot be written truthfully, :class:`ValueError` for a target not written
+        yet, :class:`NgcError` for a program error."""
+        from .flatten import flatten
+
+        if self.dialect != dialects.LINUXCNC:
+            raise ValueError(f"{self.name} is in the engine dialect: flatten() takes LinuxCNC "
+                             "programs")
+        return flatten(self._source_text(), self.name, self._interpreter, target=target,
+                       inch=inch, decimals=decimals, source_lines=source_lines, verify=verify)
 
     def _draw(self, output: str, how: object) -> None:
         from .commands.plot import PlotOptions, draw, draw_engine
