@@ -121,3 +121,12 @@ def test_the_library() -> None:
     with pytest.raises(Refused) as caught:
         ngc.Program.load("G21\nG38.2 Z-1 F10\nM2\n").flatten()
     assert caught.value.line == 2
+
+
+def test_a_device_is_written_to_not_replaced(tmp_path: Path) -> None:
+    import os
+    import stat
+
+    done = _ngc("flatten", str(ROOT / "examples" / "pocket.ngc"), "-o", os.devnull)
+    assert done.returncode == 0, done.stderr
+    assert stat.S_ISCHR(os.stat(os.devnull).st_mode)  # still the device

@@ -283,9 +283,9 @@ def test_the_controls(browser: Any, tmp_path: Path) -> None:
     o.page.locator("#slider").fill("0")
     o.page.locator("#rate").select_option("100")
     o.page.locator("#play").click()
-    time.sleep(0.6)
+    o.page.wait_for_function("window.ngcView.viewer.time > 0", timeout=10_000)
     o.page.locator("#play").click()
-    assert 0 < o.js("window.ngcView.viewer.time") < o.js("window.ngcView.viewer.meta.time.total")
+    assert 0 < o.js("window.ngcView.viewer.time") <= o.js("window.ngcView.viewer.meta.time.total")
     # the help overlay
     o.page.locator("body").press("?")
     assert o.page.locator("#help").is_visible()

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import stat
 import sys
 import tempfile
 
@@ -81,9 +82,23 @@ def run(options: argparse.Namespace) -> int:
 
 
 def _write(output: str | None, text: str) -> int:
-    """The program to ``output`` (None or ``-``: stdout), whole or not at all."""
+    """The program to ``output`` (None or ``-``: stdout), whole or not at all: a regular file
+    (or a new one) through a temporary file renamed over it; anything else (``/dev/null``, a
+    FIFO) written to as it is, never replaced."""
     if output is None or output == "-":
         sys.stdout.write(text)
+        return EXIT_OK
+    try:
+        special = os.path.exists(output) and not stat.S_ISREG(os.stat(output).st_mode)
+    except OSError:
+        special = False
+    if special:
+        try:
+            with open(output, "w", encoding="utf-8", newline="\n") as handle:
+                handle.write(text)
+        except OSError as exc:
+            sys.stderr.write(f"ngc flatten: cannot write {display_name(output)}: {exc.strerror}\n")
+            return EXIT_USAGE
         return EXIT_OK
     folder = os.path.dirname(os.path.abspath(output))
     try:
