@@ -73,10 +73,10 @@ def test_a_probe_is_refused_and_nothing_is_written(tmp_path: Path) -> None:
 
 
 def test_a_target_not_written_yet_says_so(tmp_path: Path) -> None:
-    done = _ngc("flatten", "--target", "grbl", str(ROOT / "examples" / "pocket.ngc"))
+    done = _ngc("flatten", "--target", "fluidnc", str(ROOT / "examples" / "pocket.ngc"))
     assert done.returncode == 2
-    assert done.stderr == ("ngc flatten: --target grbl is not supported yet (written: "
-                           "linuxcnc)\n")
+    assert done.stderr == ("ngc flatten: --target fluidnc is not supported yet (written: "
+                           "linuxcnc, grbl)\n")
 
 
 def test_source_lines_percent_and_inch(tmp_path: Path) -> None:
@@ -130,3 +130,39 @@ def test_a_device_is_written_to_not_replaced(tmp_path: Path) -> None:
     done = _ngc("flatten", str(ROOT / "examples" / "pocket.ngc"), "-o", os.devnull)
     assert done.returncode == 0, done.stderr
     assert stat.S_ISCHR(os.stat(os.devnull).st_mode)  # still the device
+
+
+GRBL_WORDS = re.compile(r"\b(?:M6|G43 H|G61|G64|G95|G96|G97|G59\.[123]|P\d|M61|M60)\b")
+
+
+def test_grbl_gets_what_grbl_takes(tmp_path: Path) -> None:
+    (tmp_path / "t.tbl").write_text("T1 P1 Z1.0 D0.25\nT2 P2 Z2.0 D0.5\n")
+    (tmp_path / "p.ngc").write_text(
+        "G21 G64 P0.01\nT1 M6\nG43\nS1000 M3\nG0 X0 Y0 Z5\n"
+        "G3 X0 Y0 Z-1 I5 J0 P3 F200\nT2 M6\nG43 H2\nG1 X10\nG61\nG1 Y10\nM2\n")
+    done = _ngc("flatten", "--target", "grbl", "-t", "t.tbl", "p.ngc", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    text = done.stdout
+    assert not GRBL_WORDS.search(_code(text)), GRBL_WORDS.search(_code(text))
+    body = [line.strip() for line in text.splitlines()]
+    assert "G43.1 Z25.4" in body and "G43.1 Z50.8" in body  # the table's lengths, Z only
+    assert sum(1 for line in body if line.startswith("G3 ")) == 3  # P3: three arcs of a turn
+    change = body.index("(tool change: put in tool 2, diameter 12.7, then resume)")
+    assert body[change - 1] == "M5" and body[change + 1] == "M0"  # (M6 stops the spindle)
+    assert body.count("M5") == 3  # (no M5 twice: canon's stop is the one written)
+    assert all(len(re.sub(r"\([^)]*\)|\s", "", line)) <= 79 for line in body)
+    assert "largest deviation 0.00" in done.stderr
+
+
+def test_grbl_refuses_what_grbl_lacks(tmp_path: Path) -> None:
+    (tmp_path / "a.ngc").write_text("G21\nG59.1\nG0 X1\nM2\n")
+    done = _ngc("flatten", "--target", "grbl", "a.ngc", cwd=tmp_path)
+    assert done.returncode == 1 and "a.ngc:2: ngc flatten: refused: G59.1: grbl has no such" in done.stderr
+    (tmp_path / "b.ngc").write_text("G21\nG95 G1 X1 F0.1 S100 M3\nM2\n")
+    done = _ngc("flatten", "--target", "grbl", "b.ngc", cwd=tmp_path)
+    assert done.returncode == 1 and "feed per revolution (G95) for a target without it" in done.stderr
+    (tmp_path / "c.ngc").write_text(
+        "G21\nG1 X-123456.789 Y-123456.789 Z-123456.789 A-123456.789 B-123456.789 "
+        "C-123456.789 F12345.678\nM2\n")
+    done = _ngc("flatten", "--target", "grbl", "c.ngc", cwd=tmp_path)
+    assert done.returncode == 1 and "a line of more than 79 characters for grbl" in done.stderr

@@ -228,7 +228,7 @@ def _add_flatten(sub: argparse._SubParsersAction[argparse.ArgumentParser],
                       help="write the program to OUT (default, or -: standard output)")
     flat.add_argument("--target", default="linuxcnc",
                       choices=("linuxcnc", "grbl", "grblhal", "fluidnc"),
-                      help="the controller (written so far: linuxcnc)")
+                      help="the controller (written so far: linuxcnc, grbl)")
     flat.add_argument("--units", choices=("mm", "inch"), default="mm",
                       help="the units the program is written in (default mm)")
     flat.add_argument("--decimals", type=int, default=None,

@@ -49,6 +49,9 @@ class Flattened(NamedTuple):
     verified: Verified | None
 
 
+Move = tuple[str, Pos, "tuple[float, ...] | None", int, int, "tuple[float, ...] | None"]
+
+
 class _Path:
     """A reader of the toolpath keeping each move's kind, end, and an arc's centre and turns."""
 
@@ -56,8 +59,7 @@ class _Path:
         # kind, end, an arc's centre, its turns, line, and its axis: the normal, pointing so
         # that the arc turns counterclockwise about it (an arc about -X turning one way is the
         # same arc as one about +X turning the other)
-        self.moves: list[tuple[str, Pos, tuple[float, ...] | None, int, int,
-                               tuple[float, ...] | None]] = []
+        self.moves: list[Move] = []
 
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
         self.moves.append((kind, end, None, 0, line, None))
@@ -109,7 +111,7 @@ def flatten(text: str, name: str, new_interpreter: Callable[[Sink], Interpreter]
             return None
         offsets = tuple(v * MM_PER_INCH if i in (0, 1, 2, 6, 7, 8) else v
                         for i, v in enumerate(entry.offsets))
-        return entry._replace(offsets=offsets)
+        return entry._replace(offsets=offsets, diameter=entry.diameter * MM_PER_INCH)
 
     writer = Flattener(toolpath, out, row, origins=origins, system=system, tool=tool,
                        inch=inch, decimals=decimals, source_lines=source_lines)
@@ -118,8 +120,8 @@ def flatten(text: str, name: str, new_interpreter: Callable[[Sink], Interpreter]
     interp.startup()
     interp.run(text.splitlines(), file=name)
     written = out.getvalue()
-    if not writer.ended:  # (a program ended by %: so is the one written)
-        written = "%\n" + written + "%\n"
+    if not writer.ended:  # (a program ended by %: so is the one written, or by M2)
+        written = "%\n" + written + "%\n" if row.percent else written + "M2\n"
     checked = None
     if verify:
         checked = _verify(original, written, new_interpreter, row)
@@ -143,6 +145,41 @@ def _origins(interp: Interpreter, line: int) -> tuple[list[list[float]], int]:
     return origins, min(max(system, 1), 9)
 
 
+def _axis_gap(m: Move, n: Move) -> float:
+    """How far apart the axes of two arcs about parallel axes are (their centres, less the part
+    along the axis: a helix's centre may be given at any height)."""
+    c, d, axis = m[2], n[2], m[5]
+    if c is None or d is None or axis is None:
+        return 0.0
+    gap = [c[i] - d[i] for i in range(3)]
+    along = sum(gap[i] * axis[i] for i in range(3))
+    return math.sqrt(sum((gap[i] - along * axis[i]) ** 2 for i in range(3)))
+
+
+def _joined(a: list[Move], b: list[Move]) -> list[Move]:
+    """``b`` with the arcs a target without P wrote one turn each (a run of single-turn arcs
+    about the same axis and centre, where ``a`` has one arc of as many turns) joined again."""
+    out: list[Move] = []
+    j = 0
+    for m in a:
+        if j >= len(b):
+            break
+        n = b[j]
+        k = m[3]
+        if m[0] == ARC and k > 1 and n[0] == ARC and n[3] == 1:
+            run = b[j:j + k]
+            if len(run) == k and all(r[0] == ARC and r[3] == 1 and r[5] == n[5]
+                                     and _axis_gap(r, n) < 1e-6 for r in run):
+                last = run[-1]
+                out.append((ARC, last[1], n[2], k, n[4], n[5]))
+                j += k
+                continue
+        out.append(n)
+        j += 1
+    out.extend(b[j:])
+    return out
+
+
 def _verify(original: _Path, written: str, new_interpreter: Callable[[Sink], Interpreter],
             target: Target) -> Verified:
     """Run the written program on the same machine inputs and compare the machine paths."""
@@ -154,7 +191,7 @@ def _verify(original: _Path, written: str, new_interpreter: Callable[[Sink], Int
     except NgcError as exc:
         return Verified(len(again.moves), math.inf,
                         f"the program written stops at its line {exc.line}: {exc.explained()}")
-    a, b = original.moves, again.moves
+    a, b = original.moves, _joined(original.moves, again.moves)
     worst = 0.0
     for i, (m, n) in enumerate(zip(a, b, strict=False)):
         if m[0] != n[0] or m[3] != n[3]:
@@ -165,7 +202,7 @@ def _verify(original: _Path, written: str, new_interpreter: Callable[[Sink], Int
             if math.dist(m[5], n[5]) > 1e-9:
                 return Verified(i, worst, f"move {i + 1} (line {m[4]}): the arc turns the "
                                 "other way")
-            worst = max(worst, math.dist(m[2], n[2]))
+            worst = max(worst, _axis_gap(m, n))
     if len(a) != len(b):
         return Verified(min(len(a), len(b)), worst,
                         f"{len(a)} moves became {len(b)}")

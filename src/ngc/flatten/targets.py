@@ -1,7 +1,7 @@
 """The controllers ``ngc flatten`` writes for, each a table of what it accepts: a new controller
 is a row, not a branch.
 
-Only ``linuxcnc`` is written so far; the others are named so that asking for them says so.
+``linuxcnc`` and ``grbl`` are written; the others are named so that asking for them says so.
 """
 
 from __future__ import annotations
@@ -23,15 +23,22 @@ class Target(NamedTuple):
     blending: bool  # G64 P Q, G61, G61.1
     decimals_mm: int
     decimals_inch: int
-    max_line: int  # characters of a line (0: no limit)
+    max_line: int  # significant characters of a line, spaces and comments left out (0: no limit)
     written: bool  # ngc flatten writes for it now
+    systems: int = 9  # work offsets G54 .. (6: to G59; G59.1-G59.3 refused)
+    css: bool = True  # G96 / G97
+    header: str = "G90 G91.1 G94 G40 G49 G80 G17 G97"  # the modes set at the start
+    percent: bool = True  # a program ended by % is written between % lines (else: M2 at the end)
 
 
 TARGETS = MappingProxyType({
     "linuxcnc": Target("linuxcnc", frozenset({"G17", "G18", "G19"}), True, True, "G43 H", True,
                        True, True, 4, 5, 0, True),
-    "grbl": Target("grbl", frozenset({"G17", "G18", "G19"}), True, False, "none", False, False,
-                   False, 3, 4, 79, False),
+    # Grbl 1.1 (commands.md): no M6 (a tool change is a pause), G43.1 for a tool length (Z
+    # only), no G61/G64, no G95, G54-G59 only, no G96/G97, 79 characters (error:11)
+    "grbl": Target("grbl", frozenset({"G17", "G18", "G19"}), True, False, "G43.1", False, False,
+                   False, 3, 4, 79, True, systems=6, css=False,
+                   header="G90 G91.1 G94 G40 G49 G80 G17", percent=False),
     "grblhal": Target("grblhal", frozenset({"G17", "G18", "G19"}), True, False, "none", False,
                       True, False, 3, 4, 255, False),
     "fluidnc": Target("fluidnc", frozenset({"G17", "G18", "G19"}), True, False, "none", False,

@@ -83,9 +83,15 @@ class Flattener:
         self.lines = 0
         self.plane = "G17"
         self.ended = False  # M2 or M30 written
+        self.rpm = 0.0
+        self.spindle_on = ""  # "M3", "M4", or "" when it stands
 
     # -- writing ------------------------------------------------------------------------------
     def write(self, text: str, line: int = 0) -> None:
+        limit = self.target.max_line
+        if limit and len(_significant(text)) > limit:
+            raise Refused(line, f"a line of more than {limit} characters for {self.target.name}: "
+                          f"{text}")
         if self.source_lines and line:
             text = f"{text} (line {line})"
         self.out.write(text + "\n")
@@ -93,8 +99,8 @@ class Flattener:
 
     def header(self, name: str) -> None:
         self.write(f"(flattened by ngc from {_comment_text(name)} for {self.target.name})")
-        self.write(f"{'G20' if self.inch else 'G21'} G90 G91.1 G94 G40 G49 G80 G17 G97")
-        self.write(SYSTEMS[self.system - 1])
+        self.write(f"{'G20' if self.inch else 'G21'} {self.target.header}")
+        self._system_words(self.system, 0)
 
     def _number(self, v: float) -> str:
         text = f"{v:.{self.decimals}f}"
@@ -174,7 +180,8 @@ class Flattener:
         code, _first, _second = plane[key]
         turns = arc.turns * sign
         if abs(turns) > 1 and not self.target.turns:
-            raise Refused(line, "an arc of several turns is not split yet for this target")
+            self._turns(arc, code, turns, line)
+            return
         s = self._coordinates(arc.start, line)
         q = self._coordinates(arc.end, line)
         c = self._coordinates((*arc.centre, 0.0, 0.0, 0.0), line)
@@ -192,6 +199,22 @@ class Flattener:
         if abs(turns) > 1:
             words.append(f"P{abs(turns)}")
         self.write(" ".join(words), line)
+
+    def _turns(self, arc: ArcMove, code: str, turns: int, line: int) -> None:
+        """An arc of several turns for a target without P: one arc a turn, each a full circle
+        rising its share of the helix, then the rest of the arc (as ``curves.frame`` measures
+        it)."""
+        from ..render import curves
+
+        f = curves.frame(arc.start, arc.end, arc.centre, arc.normal, arc.turns)
+        full = abs(turns) - 1
+        points = [f.point(curves.TAU * k) for k in range(1, full + 1)]
+        starts = [arc.start, *[(*p, *arc.start[3:]) for p in points]]
+        ends = [*[(*p, *arc.end[3:]) for p in points], arc.end]
+        for a, b in zip(starts, ends, strict=True):
+            piece = ArcMove(a, b, arc.centre, arc.normal, 1 if arc.turns > 0 else -1,
+                            arc.op, arc.prog_start)
+            self.arc(piece, line)
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
         raise Refused(line, "NURBS (G5.2) are not flattened yet")
@@ -211,7 +234,7 @@ class Flattener:
             if system != self.system:
                 self.system = system
                 self.where = [None] * 6
-                self.write(SYSTEMS[system - 1], line)
+                self._system_words(system, line)
         elif kind is ops.UseToolLengthOffset:
             self._tool_length(line)
         elif kind is ops.SetFeedRate:
@@ -233,25 +256,35 @@ class Flattener:
                 naive = self.naive * self._program_mm() / self.scale
                 self.write(f"G64 P{self._number(tolerance)} Q{self._number(naive)}", line)
         elif kind is ops.SetSpindleSpeed:
-            self.write(f"S{self._number(op.rpm)}", line)  # type: ignore[attr-defined]
+            self.rpm = op.rpm  # type: ignore[attr-defined]
+            self.write(f"S{self._number(self.rpm)}", line)
         elif kind is ops.StartSpindleClockwise:
+            self.spindle_on = "M3"
             self.write("M3", line)
         elif kind is ops.StartSpindleCounterclockwise:
+            self.spindle_on = "M4"
             self.write("M4", line)
         elif kind is ops.StopSpindleTurning:
+            self.spindle_on = ""
             self.write("M5", line)
         elif kind is ops.SetSpindleMode:
             css = op.css_max  # type: ignore[attr-defined]
-            if css > 0.0:
+            if css > 0.0 or not self.target.css:
+                if css <= 0.0:
+                    return  # (G97: the only mode there is)
                 raise Refused(line, "constant surface speed (G96) is not flattened yet")
         elif kind is ops.SelectTool:
             self.selected = op.tool  # type: ignore[attr-defined]
         elif kind is ops.ChangeTool:
             if self.target.tool_change:
                 self.write(f"M6 T{self.selected}", line)
+            else:
+                self._tool_change(line)
         elif kind is ops.ChangeToolNumber:
             if self.target.tool_change:
                 self.write(f"M61 Q{self.selected}", line)
+            else:
+                self.write(f"(the spindle holds tool {self.selected})", line)
         elif kind is ops.Dwell:
             self.write(f"G4 P{self._number(op.seconds)}", line)  # type: ignore[attr-defined]
         elif kind is ops.FloodOn:
@@ -282,6 +315,24 @@ class Flattener:
     def finish(self) -> None:
         """Nothing is held back."""
 
+    def _system_words(self, system: int, line: int) -> None:
+        if system > self.target.systems:
+            raise Refused(line, f"{SYSTEMS[system - 1]}: {self.target.name} has no such work "
+                          "offset")
+        self.write(SYSTEMS[system - 1], line)
+
+    def _tool_change(self, line: int) -> None:
+        """A target without M6: the spindle stops (as M6 stops it), a comment names the tool and
+        its diameter, the program pauses (M0) for the operator; the program starts the spindle
+        again itself, as after M6."""
+        entry = self.tool_entry(self.selected) if self.selected > 0 else None
+        size = "" if entry is None else f", diameter {self._number(entry.diameter / self.scale)}"
+        if self.spindle_on:  # (canon stops it for M6 already)
+            self.write("M5", line)
+            self.spindle_on = ""
+        self.write(f"(tool change: put in tool {self.selected}{size}, then resume)", line)
+        self.write("M0", line)
+
     # -- tool length ----------------------------------------------------------------------------
     def _program_mm(self) -> float:
         return MM_PER_INCH if self.toolpath.frame.inch_program else 1.0
@@ -295,20 +346,40 @@ class Flattener:
                 self.write("G49", line)
             self.kept, self.kept_offset = None, (0.0,) * 6
             return
-        if self.target.tool_length == "G43 H":
+        if self.target.tool_length in ("G43 H", "G43.1"):
             for number in (self.toolpath.tool, self.selected):
                 entry = self.tool_entry(number) if number > 0 else None
-                if entry is not None and _same(entry.offsets[:6], tlo):
-                    if self.kept != number:
-                        self.write(f"G43 H{number}", line)
-                    self.kept = number
-                    self.kept_offset = tuple(entry.offsets[:6])  # type: ignore[assignment]
-                    self.where = [None] * 6
-                    return
+                if entry is None or not _same(entry.offsets[:6], tlo):
+                    continue
+                if self.target.tool_length == "G43.1":
+                    if any(entry.offsets[i] for i in (0, 1, 3, 4, 5)):
+                        break  # (G43.1 moves Z alone: a length off Z is folded)
+                    words = f"G43.1 Z{self._number(entry.offsets[2] / self.scale)}"
+                else:
+                    words = f"G43 H{number}"
+                if self.kept != number:
+                    self.write(words, line)
+                self.kept = number
+                self.kept_offset = tuple(entry.offsets[:6])  # type: ignore[assignment]
+                self.where = [None] * 6
+                return
         if self.kept is not None:
             self.write("G49", line)
         self.kept, self.kept_offset = None, (0.0,) * 6
         self.where = [None] * 6
+
+
+def _significant(text: str) -> str:
+    """A line as a controller counts it: without spaces and comments."""
+    out, depth = [], 0
+    for c in text:
+        if c == "(":
+            depth += 1
+        elif c == ")" and depth:
+            depth -= 1
+        elif not depth and not c.isspace():
+            out.append(c)
+    return "".join(out)
 
 
 def _same(a: Sequence[float], b: Sequence[float]) -> bool:
