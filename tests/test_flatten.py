@@ -158,11 +158,27 @@ def test_grbl_refuses_what_grbl_lacks(tmp_path: Path) -> None:
     (tmp_path / "a.ngc").write_text("G21\nG59.1\nG0 X1\nM2\n")
     done = _ngc("flatten", "--target", "grbl", "a.ngc", cwd=tmp_path)
     assert done.returncode == 1 and "a.ngc:2: ngc flatten: refused: G59.1: grbl has no such" in done.stderr
-    (tmp_path / "b.ngc").write_text("G21\nG95 G1 X1 F0.1 S100 M3\nM2\n")
+    (tmp_path / "b.ngc").write_text("G21\nS100\nG95 G1 X1 F0.1\nM2\n")  # (the spindle stands)
     done = _ngc("flatten", "--target", "grbl", "b.ngc", cwd=tmp_path)
-    assert done.returncode == 1 and "feed per revolution (G95) for a target without it" in done.stderr
+    assert done.returncode == 1 and "feed per revolution (G95) for grbl, which has none" in done.stderr
     (tmp_path / "c.ngc").write_text(
         "G21\nG1 X-123456.789 Y-123456.789 Z-123456.789 A-123456.789 B-123456.789 "
         "C-123456.789 F12345.678\nM2\n")
     done = _ngc("flatten", "--target", "grbl", "c.ngc", cwd=tmp_path)
     assert done.returncode == 1 and "a line of more than 79 characters for grbl" in done.stderr
+
+
+def test_outputs_m30_and_feed_per_revolution(tmp_path: Path) -> None:
+    (tmp_path / "p.ngc").write_text("G21\nM62 P1\nM65 P2\nM68 E0 Q3\nS500 M3\nG95 G1 X2 F0.2\n"
+                                    "M30\n")
+    done = _ngc("flatten", "p.ngc", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    body = [line.strip() for line in _code(done.stdout).splitlines()]
+    assert {"M62 P1", "M65 P2", "M68 E0 Q3", "G1 G95 F0.2 X2 Y0 Z0", "M30"} <= set(body)
+    done = _ngc("flatten", "--target", "grbl", "p.ngc", cwd=tmp_path)
+    assert done.returncode == 1 and "SetMotionOutputBit is not flattened yet" in done.stderr
+    (tmp_path / "q.ngc").write_text("G21\nS500 M3\nG95 G1 X2 F0.2\nM30\n")
+    done = _ngc("flatten", "--target", "grbl", "q.ngc", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    body = [line.strip() for line in _code(done.stdout).splitlines()]
+    assert "G1 F100 X2 Y0 Z0" in body and "M30" in body  # (0.2 mm a turn at 500 rpm)

@@ -39,6 +39,15 @@ RESOLVED = frozenset({
 })
 
 
+# The outputs, as the M code that sets them (M62-M65 synchronised with motion or at once, M67/M68
+# analog): the canon operation -> (code, what it carries).
+_OUTPUTS: dict[type, tuple[str, str]] = {
+    ops.SetMotionOutputBit: ("M62", "bit"), ops.ClearMotionOutputBit: ("M63", "bit"),
+    ops.SetAuxOutputBit: ("M64", "bit"), ops.ClearAuxOutputBit: ("M65", "bit"),
+    ops.SetMotionOutputValue: ("M67", "value"), ops.SetAuxOutputValue: ("M68", "value"),
+}
+
+
 class Refused(Exception):
     """A program that cannot be flattened truthfully: the line and the reason."""
 
@@ -83,6 +92,7 @@ class Flattener:
         self.lines = 0
         self.plane = "G17"
         self.ended = False  # M2 or M30 written
+        self.shuttle = False  # a pallet shuttle waits for what comes with it (M30, M60)
         self.rpm = 0.0
         self.spindle_on = ""  # "M3", "M4", or "" when it stands
 
@@ -137,12 +147,19 @@ class Flattener:
                 self.where[i] = value
         return " ".join(words)
 
-    def _feed_words(self) -> str:
+    def _feed_words(self, line: int = 0) -> str:
         words = []
-        if self.per_rev != self.per_rev_written:
+        feed = self.feed_mm
+        if self.per_rev and not self.target.feed_per_rev:
+            # (G95 for a target without it: per minute, at the spindle speed it turns at)
+            if not (self.spindle_on and self.rpm > 0.0):
+                raise Refused(line, f"feed per revolution (G95) for {self.target.name}, which "
+                              "has none, with no spindle speed to turn it into a feed per minute")
+            feed *= self.rpm
+        elif self.per_rev != self.per_rev_written:
             words.append("G95" if self.per_rev else "G94")
             self.per_rev_written = self.per_rev
-        rate = self._number(self.feed_mm / self.scale)
+        rate = self._number(feed / self.scale)
         if rate != self.feed_written:
             words.append(f"F{rate}")
             self.feed_written = rate
@@ -159,7 +176,7 @@ class Flattener:
         axes = self._axes(q)
         words = [code]
         if kind == FEED:
-            feed = self._feed_words()
+            feed = self._feed_words(line)
             if feed:
                 words.append(feed)
         if not axes:
@@ -190,7 +207,7 @@ class Flattener:
         words = [] if code == self.plane else [code]
         self.plane = code
         words.append("G3" if turns > 0 else "G2")
-        feed = self._feed_words()
+        feed = self._feed_words(line)
         if feed:
             words.append(feed)
         axes = self._axes(q, force=True)
@@ -242,8 +259,6 @@ class Flattener:
             self.feed_mm = op.rate * (MM_PER_INCH if frame.inch_program else 1.0)  # type: ignore[attr-defined]
         elif kind is ops.SetFeedMode:
             self.per_rev = op.mode == 1  # type: ignore[attr-defined]
-            if self.per_rev and not self.target.feed_per_rev:
-                raise Refused(line, "feed per revolution (G95) for a target without it")
         elif kind is ops.SetMotionControlMode:
             mode = op.mode  # type: ignore[attr-defined]
             if self.target.blending and mode in ("CANON_EXACT_STOP", "CANON_EXACT_PATH"):
@@ -300,14 +315,28 @@ class Flattener:
         elif kind is ops.Message:
             self.write(f"(MSG,{_comment_text(op.text)})", line)  # type: ignore[attr-defined]
         elif kind is ops.ProgramStop:
-            self.write("M0", line)
+            if self.shuttle:  # (M60: the pallets exchanged, then a pause)
+                if not self.target.tool_change:
+                    raise Refused(line, f"M60 (pallet shuttle): {self.target.name} has none")
+                self.write("M60", line)
+            else:
+                self.write("M0", line)
+            self.shuttle = False
         elif kind is ops.OptionalProgramStop:
             self.write("M1", line)
         elif kind is ops.ProgramEnd:
-            self.write("M2", line)
+            self.write("M30" if self.shuttle else "M2", line)  # (M30: the pallets, then the end)
+            self.shuttle = False
             self.ended = True
-        elif kind is ops.PalletShuttle and self.target.tool_change:
-            self.write("M60", line)
+        elif kind is ops.PalletShuttle:
+            self.shuttle = True
+        elif kind in _OUTPUTS and self.target.io:
+            code, field = _OUTPUTS[kind]
+            if field == "bit":
+                self.write(f"{code} P{op.bit}", line)  # type: ignore[attr-defined]
+            else:
+                self.write(f"{code} E{op.channel} Q{self._number(op.value)}",  # type: ignore[attr-defined]
+                           line)
         else:
             name = kind.__name__
             raise Refused(line, f"{name} is not flattened yet")
