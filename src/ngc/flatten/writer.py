@@ -89,6 +89,7 @@ class Flattener:
         self.selected = 0
         self.naive = 0.0
         self.where: list[float | None] = [None] * 6  # the output's current position (as written)
+        self.raw: list[float | None] = [None] * 6  # and the coordinates it was written from
         self.lines = 0
         self.plane = "G17"
         self.ended = False  # M2 or M30 written
@@ -135,8 +136,13 @@ class Flattener:
         """The axis words that change (``force``: X Y Z whatever; A B C only once they are
         away from 0, so that a program for three axes has no rotary word)."""
         words = []
+        raw = self.raw
         for i, axis in enumerate(AXES):
-            text = self._number(q[i])
+            v = q[i]
+            if v == raw[i] and not (force and i < 3):
+                continue  # (the same coordinate as the move before: the same word)
+            raw[i] = v
+            text = self._number(v)
             value = float(text)
             was = self.where[i]
             if i >= 3 and was is None and value == 0.0:
@@ -251,6 +257,7 @@ class Flattener:
             if system != self.system:
                 self.system = system
                 self.where = [None] * 6
+                self.raw = [None] * 6
                 self._system_words(system, line)
         elif kind is ops.UseToolLengthOffset:
             self._tool_length(line)
@@ -391,11 +398,13 @@ class Flattener:
                 self.kept = number
                 self.kept_offset = tuple(entry.offsets[:6])  # type: ignore[assignment]
                 self.where = [None] * 6
+                self.raw = [None] * 6
                 return
         if self.kept is not None:
             self.write("G49", line)
         self.kept, self.kept_offset = None, (0.0,) * 6
         self.where = [None] * 6
+        self.raw = [None] * 6
 
 
 def _significant(text: str) -> str:
