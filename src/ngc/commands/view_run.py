@@ -33,8 +33,6 @@ from .common import (
 )
 
 if TYPE_CHECKING:
-    from ..canon.ops import Sink
-    from ..interp.interpreter import Interpreter
     from ..view.page import Page
 
 POLL_SECONDS = 0.3  # how often --watch looks at the program file
@@ -88,7 +86,7 @@ def _page(options: argparse.Namespace) -> Page:
             if program.dialect == ENGINE:
                 setup = engine_setup(options)
                 text = dialects.read_text(program.handle)
-                return build_page(text, program.name, new_interpreter=_no_interpreter,
+                return build_page(text, program.name, new_interpreter=None,
                                   engine=setup, engine_dialect=True,
                                   max_iterations=options.max_iterations)
             inputs, loaded = load_inputs("view", options, options.file)
@@ -114,10 +112,6 @@ def _page(options: argparse.Namespace) -> Page:
             raise _Refused(exc.message) from None
     finally:
         program.close()
-
-
-def _no_interpreter(sink: Sink) -> Interpreter:  # pragma: no cover (engine programs have none)
-    raise AssertionError("an engine-dialect program runs without the interpreter")
 
 
 def _report(options: argparse.Namespace, page: Page, where: str) -> None:

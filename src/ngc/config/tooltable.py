@@ -58,6 +58,13 @@ class ToolEntry(NamedTuple):
 
 _ROTARY = frozenset((3, 4, 5))  # A B C in the offsets X Y Z A B C U V W: degrees
 
+
+def scaled_entry(entry: ToolEntry, factor: float) -> ToolEntry:
+    """A tool with its lengths and diameter times ``factor`` (inches to mm: 25.4); angles and
+    rotary offsets (A B C) are kept."""
+    offsets = tuple(v if i in _ROTARY else v * factor for i, v in enumerate(entry.offsets))
+    return entry._replace(offsets=offsets, diameter=entry.diameter * factor)
+
 # The slot of a line that starts with a tool number and is skipped: no tool is found there.
 UNREAD = ToolEntry(-1, -1)
 # The spindle's entry when no tool was ever loaded.
@@ -85,13 +92,8 @@ class ToolTable(NamedTuple):
         the interpreter's inches: ``1 / 25.4``); angles and rotary offsets (A B C) are kept."""
         if factor == 1.0:
             return self
-
-        def scale(entry: ToolEntry) -> ToolEntry:
-            offsets = tuple(v if i in _ROTARY else v * factor for i, v in enumerate(entry.offsets))
-            return entry._replace(offsets=offsets, diameter=entry.diameter * factor)
-
-        spindle = None if self.spindle is None else scale(self.spindle)
-        return self._replace(entries=tuple(scale(e) if e is not UNREAD else e
+        spindle = None if self.spindle is None else scaled_entry(self.spindle, factor)
+        return self._replace(entries=tuple(scaled_entry(e, factor) if e is not UNREAD else e
                                            for e in self.entries), spindle=spindle)
 
     def skipped_report(self, name: str) -> str:

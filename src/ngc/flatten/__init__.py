@@ -16,7 +16,7 @@ from typing import NamedTuple
 
 from ..canon import ops
 from ..canon.ops import Sink
-from ..config.tooltable import ToolEntry
+from ..config.tooltable import ToolEntry, scaled_entry
 from ..errors import NgcError
 from ..interp.interpreter import Interpreter
 from ..interp.parameters import COORD_STRIDE, G54_ORIGIN
@@ -107,11 +107,7 @@ def flatten(text: str, name: str, new_interpreter: Callable[[Sink], Interpreter]
 
     def tool(number: int) -> ToolEntry | None:  # (in mm)
         entry = next((e for e in slots[1:] if e.number == number), None)
-        if entry is None:
-            return None
-        offsets = tuple(v * MM_PER_INCH if i in (0, 1, 2, 6, 7, 8) else v
-                        for i, v in enumerate(entry.offsets))
-        return entry._replace(offsets=offsets, diameter=entry.diameter * MM_PER_INCH)
+        return None if entry is None else scaled_entry(entry, MM_PER_INCH)
 
     writer = Flattener(toolpath, out, row, origins=origins, system=system, tool=tool,
                        inch=inch, decimals=decimals, source_lines=source_lines)

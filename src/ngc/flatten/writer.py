@@ -262,8 +262,7 @@ class Flattener:
         elif kind is ops.UseToolLengthOffset:
             self._tool_length(line)
         elif kind is ops.SetFeedRate:
-            frame = self.toolpath.frame
-            self.feed_mm = op.rate * (MM_PER_INCH if frame.inch_program else 1.0)  # type: ignore[attr-defined]
+            self.feed_mm = op.rate * self._program_mm()  # type: ignore[attr-defined]
         elif kind is ops.SetFeedMode:
             self.per_rev = op.mode == 1  # type: ignore[attr-defined]
         elif kind is ops.SetMotionControlMode:
@@ -371,7 +370,8 @@ class Flattener:
 
     # -- tool length ----------------------------------------------------------------------------
     def _program_mm(self) -> float:
-        return MM_PER_INCH if self.toolpath.frame.inch_program else 1.0
+        """mm per program unit now (the toolpath's machine is in mm: its frame's scale)."""
+        return self.toolpath.frame.scale
 
     def _tool_length(self, line: int) -> None:
         """The tool length offset now: a tool's in the table stays ``G43 H<tool>``; any other

@@ -196,11 +196,8 @@ class FeedWatch:
     def other(self, op: ops.Op, line: int) -> None:
         kind = type(op)
         if kind is ops.SetFeedRate:
-            frame = self.toolpath.frame
-            scale = 1.0  # machine units per program unit, as the feed was set
-            if frame.inch_program != frame.inch_machine:
-                scale = 25.4 if frame.inch_program else 1.0 / 25.4
-            self.per_second = op.rate * scale / 60.0  # type: ignore[attr-defined]
+            # (in machine units, as the feed was set: the frame's scale then)
+            self.per_second = op.rate * self.toolpath.frame.scale / 60.0  # type: ignore[attr-defined]
         elif kind is ops.SetFeedMode and op.mode == 1:  # type: ignore[attr-defined]
             self.per_second = 0.0  # (per revolution: the spindle's speed decides)
 

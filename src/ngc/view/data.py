@@ -14,6 +14,7 @@ from array import array
 from collections.abc import Sequence
 
 from ..canon import ops
+from ..engine.bezier import point
 from ..render import curves
 from ..toolpath.frame import Pos
 from ..toolpath.tracker import (
@@ -142,20 +143,13 @@ class PathArrays:
         self._begin(start)
         kind = 0 if motion == RAPID else 7
         for k in range(1, CURVE_STEPS + 1):
-            t = k / CURVE_STEPS
-            u = 1.0 - t
-            w = (u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t)
-            self._to([w[0] * c[0] + w[1] * c[1] + w[2] * c[2] + w[3] * c[3]
-                      for c in cubics[:3]], line, kind)
+            self._to([point(c, k / CURVE_STEPS) for c in cubics[:3]], line, kind)
 
     def other(self, op: ops.Op, line: int) -> None:
         kind = type(op)
         if kind is ops.SetFeedRate:
-            frame = self.toolpath.frame
-            scale = 1.0  # machine units per program unit, as the feed was set
-            if frame.inch_program != frame.inch_machine:
-                scale = 25.4 if frame.inch_program else 1.0 / 25.4
-            self._feed = op.rate * scale  # type: ignore[attr-defined]
+            # (in machine units, as the feed was set: the frame's scale then)
+            self._feed = op.rate * self.toolpath.frame.scale  # type: ignore[attr-defined]
         elif kind is ops.SetFeedMode and op.mode == 1:  # type: ignore[attr-defined]
             self._feed = 0.0  # (per revolution)
 

@@ -20,6 +20,7 @@ from importlib import resources
 from typing import TYPE_CHECKING, NamedTuple
 
 from ..canon.ops import Sink
+from ..engine.bezier import length, point
 from ..errors import NgcError
 from ..interp.interpreter import Interpreter
 from ..toolpath.limits import LimitWatch
@@ -54,13 +55,16 @@ class _Lines:
         self.speed = array("f", bytes(4 * (count + 2)))
 
     def segment(self, seg: Segment) -> None:
-        line = seg.line
+        """A planner's segment (:class:`~ngc.planner.timing.Timer`'s listener)."""
+        self.note(seg.line, seg.t0, seg.peak)
+
+    def note(self, line: int, t0: float, speed: float) -> None:
+        """A piece of line ``line`` starting at ``t0`` at up to ``speed``."""
         if 0 <= line < len(self.t0):
-            t0 = self.t0[line]
-            if not t0 <= seg.t0:  # (nan, or later)
-                self.t0[line] = seg.t0
-            if seg.peak > self.speed[line]:
-                self.speed[line] = seg.peak
+            if not self.t0[line] <= t0:  # (nan, or later)
+                self.t0[line] = t0
+            if speed > self.speed[line]:
+                self.speed[line] = speed
 
 
 class _Rows:
@@ -80,14 +84,14 @@ class _Rows:
         return len(text)
 
 
-def build_page(text: str, name: str, new_interpreter: Callable[[Sink], Interpreter], *,
+def build_page(text: str, name: str, new_interpreter: Callable[[Sink], Interpreter] | None, *,
                machine: Machine | None = None, units: str = "mm",
                engine: EngineSetup | None = None, engine_dialect: bool = False,
                max_iterations: int | None = None, view: str = "iso") -> Page:
     """The page of the program ``text`` (named ``name``), run by ``new_interpreter(sink)`` (or,
-    ``engine_dialect``, by the engine with ``engine``); timed on ``machine`` if given (whose units
-    are then the page's), else drawn in ``units``; ``view`` is the view it opens in (``iso``,
-    or ``lathe``: Z to the right, X up)."""
+    ``engine_dialect``, by the engine with ``engine``: no interpreter); timed on ``machine`` if
+    given (whose units are then the page's), else drawn in ``units``; ``view`` is the view it
+    opens in (``iso``, or ``lathe``: Z to the right, X up)."""
     if machine is not None:
         units = machine.linear_units
     inch = units == "inch"
@@ -123,7 +127,8 @@ def build_page(text: str, name: str, new_interpreter: Callable[[Sink], Interpret
     rows = _Rows()
     if clock is not None:
         rows = clock.trajectory()
-    elif result is not None and machine is not None and result.total_s > 0.0:  # type: ignore[attr-defined]
+    elif (result is not None and machine is not None and new_interpreter is not None
+          and result.total_s > 0.0):  # type: ignore[attr-defined]
         rows = _trajectory(text, name, new_interpreter, machine,
                            result.total_s)  # type: ignore[attr-defined]
     warnings = tuple(e.text(units) for e in (watch.excesses() if watch else ()))
@@ -136,7 +141,7 @@ def build_page(text: str, name: str, new_interpreter: Callable[[Sink], Interpret
 
 
 def _run(text: str, name: str, toolpath: Toolpath | _EngineClock,
-         new_interpreter: Callable[[Sink], Interpreter], engine: EngineSetup | None,
+         new_interpreter: Callable[[Sink], Interpreter] | None, engine: EngineSetup | None,
          engine_dialect: bool, max_iterations: int | None) -> NgcError | None:
     try:
         if engine_dialect:
@@ -145,7 +150,7 @@ def _run(text: str, name: str, toolpath: Toolpath | _EngineClock,
             kwargs = {} if max_iterations is None else {"max_iterations": max_iterations}
             dialects.interpret_engine(text, toolpath, setup=engine, file=name, **kwargs)
         else:
-            assert isinstance(toolpath, Toolpath)
+            assert isinstance(toolpath, Toolpath) and new_interpreter is not None
             interp = new_interpreter(toolpath)
             interp.startup()
             interp.run(text.splitlines(), file=name)
@@ -174,21 +179,14 @@ class _EngineClock:
 
     def emit(self, op: object, label: str, line: int) -> None:
         from ..engine import Dwell, EngineSegment
-        from ..engine.bezier import length
 
         if isinstance(op, EngineSegment):
             held = self.toolpath.pos
             cubics = [tuple(op.axes[a]) if a in op.axes else (held[i],) * 4
                       for i, a in enumerate("XYZ")]
             duration = max(op.duration, 0.0)
-            lines = self.lines
-            if 0 <= line < len(lines.t0):
-                if not lines.t0[line] <= self.t:
-                    lines.t0[line] = self.t
-                if duration > 0.0:
-                    speed = length(cubics) / duration  # type: ignore[arg-type]
-                    if speed > lines.speed[line]:
-                        lines.speed[line] = speed
+            speed = length(cubics) / duration if duration > 0.0 else 0.0  # type: ignore[arg-type]
+            self.lines.note(line, self.t, speed)
             self.starts.append(self.t)
             self.pieces.append((duration, cubics, line))  # type: ignore[arg-type]
             self.t += duration
@@ -219,10 +217,7 @@ class _EngineClock:
             i = max(0, bisect.bisect_right(self.starts, t) - 1)
             duration, cubics, line = self.pieces[i]
             u = 1.0 if duration <= 0.0 else min(max((t - self.starts[i]) / duration, 0.0), 1.0)
-            v = 1.0 - u
-            w = (v * v * v, 3.0 * v * v * u, 3.0 * v * u * u, u * u * u)
-            rows.values.extend((t, *(sum(w[j] * c[j] for j in range(4)) for c in cubics),
-                                float(line)))
+            rows.values.extend((t, *(point(c, u) for c in cubics), float(line)))
         return rows
 
 
@@ -342,12 +337,8 @@ def _packed(data: bytes) -> str:
 
 def _script_json(value: object) -> str:
     """JSON that can sit in a ``<script>`` block (no ``</`` to end it early)."""
-    text = json.dumps(value, ensure_ascii=True, allow_nan=False, default=_nan_safe)
+    text = json.dumps(value, ensure_ascii=True, allow_nan=False)
     return text.replace("</", "<\\/")
-
-
-def _nan_safe(value: object) -> object:
-    raise TypeError(f"not JSON: {value!r}")
 
 
 def _escape_html(text: str) -> str:
