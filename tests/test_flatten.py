@@ -3,6 +3,7 @@ compared with the original's; refusals say the line and the reason and write not
 
 from __future__ import annotations
 
+import math
 import re
 import subprocess
 import sys
@@ -103,11 +104,48 @@ def test_a_tool_length_the_program_changes_is_folded(tmp_path: Path) -> None:
     assert "G0 X0 Y0 Z30" in body  # (Z0 with the 30 mm length the program set: folded)
 
 
-def test_an_arc_turned_off_the_axes_is_refused(tmp_path: Path) -> None:
-    (tmp_path / "p.ngc").write_text("G21 G18\nG10 L2 P1 R30\nG0 X0 Z0\nG2 X2 Z0 I1 K0 F100\nM2\n")
-    done = _ngc("flatten", "p.ngc", cwd=tmp_path)
-    assert done.returncode == 1
-    assert "p.ngc:4: ngc flatten: refused: an arc in a plane the XY rotation turns off" in done.stderr
+def _moves(text: str) -> list[tuple[str, dict[str, float]]]:
+    """The motion lines written: the code and the words (modal motion carried)."""
+    out, code = [], ""
+    for line in _code(text).splitlines():
+        words = dict((w[0], float(w[1:])) for w in line.split() if w[0] in "XYZIJKPF")
+        codes = [w for w in line.split() if w[0] == "G" and w[1:] in ("0", "1", "2", "3")]
+        code = codes[-1] if codes else code
+        if any(k in words for k in "XYZ"):
+            out.append((code, words))
+    return out
+
+
+@pytest.mark.parametrize("tolerance", ["0.002", "0.0005"])
+def test_an_arc_turned_off_the_axes_becomes_lines_within_the_tolerance(
+        tmp_path: Path, tolerance: str) -> None:
+    # G18 under a 30 degree rotation: the arc's plane holds Z and the X axis turned by 30
+    # degrees, which no plane word names
+    (tmp_path / "p.ngc").write_text("G21 G18\nG10 L2 P1 R30\nG0 X0 Y0 Z0\n"
+                                    "G2 X20 Z0 I10 K0 F100\nM2\n")
+    done = _ngc("flatten", "p.ngc", "--tolerance", tolerance, cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    moves = _moves(done.stdout)
+    assert all(code == "G1" for code, _ in moves[1:])
+    c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
+    centre = (10 * c, 10 * s, 0.0)
+    points = [(0.0, 0.0, 0.0)]
+    for _, w in moves[1:]:
+        p = points[-1]
+        points.append((w.get("X", p[0]), w.get("Y", p[1]), w.get("Z", p[2])))
+
+    def off_circle(p: tuple[float, ...]) -> float:
+        u = (p[0] - centre[0]) * c + (p[1] - centre[1]) * s  # along the turned X
+        v = -(p[0] - centre[0]) * s + (p[1] - centre[1]) * c  # off the arc's plane
+        return abs(math.hypot(u, p[2] - centre[2]) - 10.0) + abs(v)
+
+    assert math.dist(points[-1], (20 * c, 20 * s, 0.0)) < 1e-4
+    assert max(off_circle(p) for p in points) < 2e-4  # the ends on the arc
+    sags = [off_circle(tuple((a[i] + b[i]) / 2 for i in range(3)))
+            for a, b in zip(points[1:], points[2:], strict=False)]
+    assert max(sags) <= float(tolerance)  # the chords within the tolerance
+    assert max(sags) > float(tolerance) / 3  # and not many more lines than it needs
+    assert "largest deviation" in done.stderr
 
 
 def test_the_library() -> None:

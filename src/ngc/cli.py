@@ -234,7 +234,13 @@ def _add_flatten(sub: argparse._SubParsersAction[argparse.ArgumentParser],
     flat.add_argument("--decimals", type=int, default=None,
                       help="decimals of the numbers (default: the target's for the units)")
     flat.add_argument("--tolerance", type=float, default=0.002,
-                      help="mm: the largest difference of the paths that verifies (default 0.002)")
+                      help="mm: how close lines written for a curve the target cannot run stay "
+                      "to it, and the largest difference of the paths that verifies (default "
+                      "0.002)")
+    flat.add_argument("--toolchange", choices=("pause", "strip", "keep"), default=None,
+                      help="a tool change: pause (M5, a comment naming the tool and its "
+                      "diameter, M0), strip (a comment only) or keep (T M6); default keep where "
+                      "the target has M6 (linuxcnc), else pause")
     flat.add_argument("--source-lines", action="store_true",
                       help="a (line N) comment on each line, the line of the program it comes from")
     flat.add_argument("--no-verify", action="store_true",

@@ -179,10 +179,12 @@ class Program:
 
     def flatten(self, target: str = "linuxcnc", *, inch: bool = False,
                 decimals: int | None = None, source_lines: bool = False,
-                verify: bool = True) -> Flattened:
+                verify: bool = True, tolerance: float = 0.002,
+                toolchange: str | None = None) -> Flattened:
         """The program written plain for ``target`` (see ``ngc flatten``): ``text``, ``lines``
         and ``verified`` (the written program run again and its machine path compared with
-        this one's).  Raises :class:`~ngc.flatten.Refused` with the line and the reason for a
+        this one's, within ``tolerance`` mm, which is also how close lines written for a curve
+        stay to it); ``toolchange``: ``pause``, ``strip`` or ``keep``.  Raises :class:`~ngc.flatten.Refused` with the line and the reason for a
         program that cannot be written truthfully, :class:`ValueError` for a target not written
         yet, :class:`NgcError` for a program error."""
         from .flatten import flatten
@@ -191,7 +193,8 @@ class Program:
             raise ValueError(f"{self.name} is in the engine dialect: flatten() takes LinuxCNC "
                              "programs")
         return flatten(self._source_text(), self.name, self._interpreter, target=target,
-                       inch=inch, decimals=decimals, source_lines=source_lines, verify=verify)
+                       inch=inch, decimals=decimals, source_lines=source_lines, verify=verify,
+                       tolerance=tolerance, toolchange=toolchange)
 
     def _draw(self, output: str, how: object) -> None:
         from .commands.plot import PlotOptions, draw, draw_engine

@@ -56,7 +56,8 @@ def run(options: argparse.Namespace) -> int:
                          lambda sink: new_interpreter(sink, inputs, setup, write_files=False),
                          target=options.target, inch=options.units == "inch",
                          decimals=options.decimals, source_lines=options.source_lines,
-                         verify=not options.no_verify)
+                         verify=not options.no_verify, tolerance=options.tolerance,
+                         toolchange=options.toolchange)
     except ValueError as exc:
         sys.stderr.write(f"ngc flatten: {exc}\n")
         return EXIT_USAGE

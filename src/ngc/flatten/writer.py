@@ -19,14 +19,22 @@ from typing import TextIO
 
 from ..canon import ops
 from ..config.tooltable import ToolEntry
+from ..render import curves
 from ..toolpath.frame import Pos
 from ..toolpath.tracker import FEED, PROBE, RAPID, SYNC, ArcMove, Cubics, Toolpath
+from .curves import arc_points, cubic_pieces, is_cubic, nurbs_points
 from .targets import Target
 
 MM_PER_INCH = 25.4
 SYSTEMS = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
 AXES = "XYZABC"
 LINEAR = (True, True, True, False, False, False)
+# An arc's plane by its normal, and the offset words of each plane with their axes.
+_PLANES = {(0, 0, 1): "G17", (0, 1, 0): "G18", (1, 0, 0): "G19"}
+_OFFSETS = {"G17": (("I", 0), ("J", 1)), "G18": (("I", 0), ("K", 2)),
+            "G19": (("J", 1), ("K", 2))}
+NO_ARC = ops.ArcFeed(0.0, 0.0, 0.0, 0.0, 0, 0.0, 0.0, 0.0, 0.0)  # (a G5's biarcs have no call)
+TOOL_CHANGES = ("pause", "strip", "keep")
 # Canon operations that change nothing the output must say: resolved into the coordinates or
 # said by the moves themselves.
 RESOLVED = frozenset({
@@ -67,7 +75,8 @@ class Flattener:
     def __init__(self, toolpath: Toolpath, out: TextIO, target: Target, *,
                  origins: Sequence[Sequence[float]], system: int,
                  tool: Callable[[int], ToolEntry | None], inch: bool = False,
-                 decimals: int | None = None, source_lines: bool = False) -> None:
+                 decimals: int | None = None, source_lines: bool = False,
+                 tolerance: float = 0.002, toolchange: str | None = None) -> None:
         self.toolpath = toolpath
         self.out = out
         self.target = target
@@ -79,6 +88,13 @@ class Flattener:
         self.decimals = decimals if decimals is not None else (
             target.decimals_inch if inch else target.decimals_mm)
         self.source_lines = source_lines
+        # lines for a curve stay this close to it (mm), less what rounding the ends may move
+        rounding = 0.5 * 10.0 ** -self.decimals * self.scale * math.sqrt(3.0)
+        self.chord = max(tolerance - rounding, 0.25 * tolerance)
+        self.toolchange = toolchange or ("keep" if target.tool_change else "pause")
+        if self.toolchange not in TOOL_CHANGES:
+            raise ValueError(f"--toolchange {self.toolchange}: choose one of "
+                             f"{', '.join(TOOL_CHANGES)}")
         self.kept: int | None = None  # the tool whose length G43 H applies
         self.kept_offset: Pos = (0.0,) * 6
         self.motion = ""
@@ -192,43 +208,73 @@ class Flattener:
 
     def arc(self, arc: ArcMove, line: int) -> None:
         n = arc.normal
-        plane = {(0, 0, 1): ("G17", 0, 1), (0, 1, 0): ("G18", 2, 0), (1, 0, 0): ("G19", 1, 2)}
-        sign = 1
         key = (round(n[0]), round(n[1]), round(n[2]))
-        if max(abs(v) for v in n) < 1.0 - 1e-12:
-            raise Refused(line, "an arc in a plane the XY rotation turns off the axes (G18 or "
-                          "G19 under G10 L2 R): it is not written as lines yet")
-        if key not in plane:
+        sign = 1
+        if key not in _PLANES:
             key, sign = (-key[0], -key[1], -key[2]), -1
-        code, _first, _second = plane[key]
+        code = _PLANES.get(key)
+        rise = sum((arc.end[i] - arc.start[i]) * n[i] for i in range(3))
+        if (code is None or max(abs(v) for v in n) < 1.0 - 1e-12
+                or code not in self.target.arc_planes
+                or (abs(rise) > 1e-9 and not self.target.helix)):
+            # (a plane the XY rotation turns off the axes, or one the target lacks, or a helix
+            # it cannot cut: straight lines within the tolerance)
+            for point in arc_points(arc, self.chord):
+                self.straight(FEED, arc.start, point, line)
+            return
         turns = arc.turns * sign
         if abs(turns) > 1 and not self.target.turns:
-            self._turns(arc, code, turns, line)
+            self._turns(arc, turns, line)
             return
+        first, second = _OFFSETS[code]
+        was = (self.where[first[1]], self.where[second[1]])
         s = self._coordinates(arc.start, line)
         q = self._coordinates(arc.end, line)
         c = self._coordinates((*arc.centre, 0.0, 0.0, 0.0), line)
-        offsets = {"G17": (("I", 0), ("J", 1)), "G18": (("I", 0), ("K", 2)),
-                   "G19": (("J", 1), ("K", 2))}[code]
         words = [] if code == self.plane else [code]
         self.plane = code
         words.append("G3" if turns > 0 else "G2")
         feed = self._feed_words(line)
         if feed:
             words.append(feed)
-        axes = self._axes(q, force=True)
-        words.append(axes)
-        words.extend(f"{letter}{self._number(c[i] - s[i])}" for letter, i in offsets)
+        words.append(self._axes(q, force=True))
+        words.append(self._centre_words(first, second, was, s, c))
         if abs(turns) > 1:
             words.append(f"P{abs(turns)}")
         self.write(" ".join(words), line)
 
-    def _turns(self, arc: ArcMove, code: str, turns: int, line: int) -> None:
+    def _centre_words(self, first: tuple[str, int], second: tuple[str, int],
+                      was: tuple[float | None, float | None], s: Sequence[float],
+                      c: Sequence[float]) -> str:
+        """The centre's offset words from the start as written.  Where the rounded numbers
+        leave the radii to the written start and end more than a unit of the last decimal
+        apart, the centre moves onto the perpendicular bisector of the two (the nearest such
+        point to the true one), so that they agree but for the offsets' own rounding (Grbl's
+        error:33, rs274's "radius to end of arc differs")."""
+        i, j = first[1], second[1]
+        sx = was[0] if was[0] is not None else float(self._number(s[i]))
+        sy = was[1] if was[1] is not None else float(self._number(s[j]))
+        ex, ey = self.where[i], self.where[j]
+        cx, cy = c[i], c[j]
+        a, b = self._number(cx - sx), self._number(cy - sy)
+        if ex is None or ey is None:
+            return f"{first[0]}{a} {second[0]}{b}"
+        ox, oy = sx + float(a), sy + float(b)
+        unit = 10.0 ** -self.decimals
+        if abs(math.hypot(sx - ox, sy - oy) - math.hypot(ex - ox, ey - oy)) > unit:
+            dx, dy = ex - sx, ey - sy
+            length = math.hypot(dx, dy)
+            if length > 1e-9:
+                nx, ny = -dy / length, dx / length
+                along = (cx - 0.5 * (sx + ex)) * nx + (cy - 0.5 * (sy + ey)) * ny
+                cx, cy = 0.5 * (sx + ex) + along * nx, 0.5 * (sy + ey) + along * ny
+                a, b = self._number(cx - sx), self._number(cy - sy)
+        return f"{first[0]}{a} {second[0]}{b}"
+
+    def _turns(self, arc: ArcMove, turns: int, line: int) -> None:
         """An arc of several turns for a target without P: one arc a turn, each a full circle
         rising its share of the helix, then the rest of the arc (as ``curves.frame`` measures
         it)."""
-        from ..render import curves
-
         f = curves.frame(arc.start, arc.end, arc.centre, arc.normal, arc.turns)
         full = abs(turns) - 1
         points = [f.point(curves.TAU * k) for k in range(1, full + 1)]
@@ -240,7 +286,20 @@ class Flattener:
             self.arc(piece, line)
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
-        raise Refused(line, "NURBS (G5.2) are not flattened yet")
+        """G5 as the biarcs LinuxCNC runs it as; G5.1 and G5.2 as lines within the tolerance."""
+        to_machine = self.toolpath.frame.to_machine
+        if is_cubic(curve):
+            a = start
+            for end, centre, turns in cubic_pieces(curve, start, to_machine):
+                if centre is None:
+                    self.straight(FEED, a, end, line)
+                else:
+                    self.arc(ArcMove(a, end, centre, (0.0, 0.0, 1.0), turns, NO_ARC, a), line)
+                a = end
+            return
+        chord = 0.5 * self.chord / self._program_mm()  # (the curve is measured halfway only)
+        for point in nurbs_points(curve, start, to_machine, chord):
+            self.straight(FEED, start, point, line)
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
         raise Refused(line, "rigid tapping (G33.1) is not flattened yet")
@@ -297,12 +356,15 @@ class Flattener:
         elif kind is ops.SelectTool:
             self.selected = op.tool  # type: ignore[attr-defined]
         elif kind is ops.ChangeTool:
-            if self.target.tool_change:
-                self.write(f"M6 T{self.selected}", line)
-            else:
+            if self.toolchange == "keep":
+                self.write(f"T{self.selected} M6", line)
+            elif self.toolchange == "pause":
                 self._tool_change(line)
+            else:
+                self.write(f"(tool change to tool {self.selected}{self._diameter()} left out)",
+                           line)
         elif kind is ops.ChangeToolNumber:
-            if self.target.tool_change:
+            if self.target.tool_change and self.toolchange == "keep":
                 self.write(f"M61 Q{self.selected}", line)
             else:
                 self.write(f"(the spindle holds tool {self.selected})", line)
@@ -360,13 +422,17 @@ class Flattener:
         """A target without M6: the spindle stops (as M6 stops it), a comment names the tool and
         its diameter, the program pauses (M0) for the operator; the program starts the spindle
         again itself, as after M6."""
-        entry = self.tool_entry(self.selected) if self.selected > 0 else None
-        size = "" if entry is None else f", diameter {self._number(entry.diameter / self.scale)}"
+        size = self._diameter()
         if self.spindle_on:  # (canon stops it for M6 already)
             self.write("M5", line)
             self.spindle_on = ""
         self.write(f"(tool change: put in tool {self.selected}{size}, then resume)", line)
         self.write("M0", line)
+
+    def _diameter(self) -> str:
+        """``, diameter D`` for the selected tool in the table (in the output's units)."""
+        entry = self.tool_entry(self.selected) if self.selected > 0 else None
+        return "" if entry is None else f", diameter {self._number(entry.diameter / self.scale)}"
 
     # -- tool length ----------------------------------------------------------------------------
     def _program_mm(self) -> float:

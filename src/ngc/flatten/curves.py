@@ -1,0 +1,77 @@
+"""Curves as the moves a simpler controller runs, in machine coordinates: a G5 cubic as the
+biarcs LinuxCNC runs it as, a G5.1 / G5.2 curve and an arc the target cannot cut as straight
+lines within a chord tolerance; and the dense points of a curve that the verification measures
+the written lines against.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+from ..canon import ops
+from ..planner.geometry import cubic_biarcs, nurbs_polyline
+from ..planner.moves import G5_PIECES
+from ..render import curves
+from ..toolpath.frame import Pos
+from ..toolpath.tracker import ArcMove
+
+ToMachine = Callable[[Pos], Pos]
+# A piece of a curve: its end, and an arc's centre and turns (None, 0: a straight line).
+Piece = tuple[Pos, "tuple[float, float, float] | None", int]
+
+
+def is_cubic(curve: ops.NurbsFeed) -> bool:
+    """A G5: one cubic Bézier (four control points of weight 1), which LinuxCNC runs as arcs."""
+    return curve.order == 4 and curve.size == 4 and all(w == 1.0 for w in curve.weights)
+
+
+def cubic_pieces(curve: ops.NurbsFeed, start: Pos, to_machine: ToMachine) -> list[Piece]:
+    """A G5's biarcs (as the planner runs them) in machine coordinates, at the start's Z A B C."""
+    out: list[Piece] = []
+    for end, centre, turns in cubic_biarcs(curve.points, G5_PIECES):
+        e = to_machine((end[0], end[1], 0.0, 0.0, 0.0, 0.0))
+        point = (e[0], e[1], start[2], start[3], start[4], start[5])
+        if centre is None:
+            out.append((point, None, 0))
+            continue
+        c = to_machine((centre[0], centre[1], 0.0, 0.0, 0.0, 0.0))
+        out.append((point, (c[0], c[1], start[2]), turns))
+    return out
+
+
+def nurbs_points(curve: ops.NurbsFeed, start: Pos, to_machine: ToMachine,
+                 tolerance: float) -> list[Pos]:
+    """Points along a G5.1 / G5.2 curve, after its start and up to its end, the lines between
+    them within ``tolerance`` (program units) of it; machine coordinates at the start's Z A B
+    C."""
+    out = []
+    for x, y in nurbs_polyline(curve.points, curve.weights, curve.knots, curve.order,
+                               tolerance):
+        p = to_machine((x, y, 0.0, 0.0, 0.0, 0.0))
+        out.append((p[0], p[1], start[2], start[3], start[4], start[5]))
+    return out
+
+
+def arc_points(arc: ArcMove, tolerance: float) -> list[Pos]:
+    """Points along an arc (or helix), after its start and up to its end, the lines between
+    them within ``tolerance`` of it (the chord's sagitta); A B C move with it in proportion."""
+    f = curves.frame(arc.start, arc.end, arc.centre, arc.normal, arc.turns)
+    r = max(f.r0, f.r1)
+    if r <= tolerance:
+        step = math.pi / 2.0
+    else:
+        step = min(math.pi / 2.0, 2.0 * math.acos(1.0 - tolerance / r))
+    n = max(1, math.ceil(f.sweep / step - 1e-9)) if f.sweep > 0.0 else 1
+    a, b = arc.start, arc.end
+    out: list[Pos] = []
+    for k in range(1, n + 1):
+        if k == n:
+            out.append(b)
+            continue
+        t = f.sweep * k / n
+        p = f.point(t)
+        u = k / n
+        out.append((p[0], p[1], p[2], a[3] + (b[3] - a[3]) * u, a[4] + (b[4] - a[4]) * u,
+                    a[5] + (b[5] - a[5]) * u))
+    return out
