@@ -3,6 +3,7 @@ compared with the original's; refusals say the line and the reason and write not
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 import subprocess
@@ -142,7 +143,7 @@ def test_an_arc_turned_off_the_axes_becomes_lines_within_the_tolerance(
     assert math.dist(points[-1], (20 * c, 20 * s, 0.0)) < 1e-4
     assert max(off_circle(p) for p in points) < 2e-4  # the ends on the arc
     sags = [off_circle(tuple((a[i] + b[i]) / 2 for i in range(3)))
-            for a, b in zip(points[1:], points[2:], strict=False)]
+            for a, b in itertools.pairwise(points)]
     assert max(sags) <= float(tolerance)  # the chords within the tolerance
     assert max(sags) > float(tolerance) / 3  # and not many more lines than it needs
     assert "largest deviation" in done.stderr
@@ -220,3 +221,40 @@ def test_outputs_m30_and_feed_per_revolution(tmp_path: Path) -> None:
     assert done.returncode == 0, done.stderr
     body = [line.strip() for line in _code(done.stdout).splitlines()]
     assert "G1 F100 X2 Y0 Z0" in body and "M30" in body  # (0.2 mm a turn at 500 rpm)
+
+
+def _library_flatten(text: str, **kw: object) -> object:
+    from ngc.flatten import flatten
+    from ngc.options import MachineOptions, load_setup, new_interpreter
+
+    setup = load_setup(MachineOptions())
+    return flatten(text, "p.ngc", lambda sink: new_interpreter(sink, MachineOptions(), setup,
+                                                               write_files=False), **kw)
+
+
+@pytest.mark.parametrize("parallel", [True, False])
+def test_a_long_program_is_verified_chunk_by_chunk(parallel: bool) -> None:
+    # 3 moves a turn of the loop, 12,000 lines written: three chunks and more
+    program = ("G21 G90 F500\n#1=0\no1 while [#1 LT 4000]\nG1 X[#1 MOD 7] Y[#1 / 10]\n"
+               "G2 X[#1 MOD 7 + 2] I1 J0\nG0 Z[#1 MOD 3]\n#1=[#1+1]\no1 endwhile\nM2\n")
+    result = _library_flatten(program, parallel=parallel)
+    verified = result.verified  # type: ignore[attr-defined]
+    assert verified.difference is None and verified.moves == 12000
+    assert verified.deviation < 1e-4
+    assert result.lines > 12000  # type: ignore[attr-defined]
+
+
+def test_the_comparison_finds_a_moved_end_and_a_missing_move() -> None:
+    from ngc.flatten.verify import compare
+
+    zero = (0.0,) * 6
+    a = [("feed", (1.0, 0.0, 0.0, 0.0, 0.0, 0.0), None, 0, 3, None, None),
+         ("rapid", (1.0, 2.0, 0.0, 0.0, 0.0, 0.0), None, 0, 4, None, None)]
+    same = compare(a, list(a), 0.002)  # type: ignore[arg-type]
+    assert same.difference is None and same.deviation == 0.0 and same.moves == 2
+    moved = [a[0], ("rapid", (1.0, 2.01, 0.0, 0.0, 0.0, 0.0), None, 0, 9, None, None)]
+    assert abs(compare(a, moved, 0.002).deviation - 0.01) < 1e-12  # type: ignore[arg-type]
+    missing = compare(a, a[:1], 0.002)  # type: ignore[arg-type]
+    assert missing.difference is not None and "1 more of the original's" in missing.difference
+    other = compare(a, [("rapid", zero, None, 0, 1, None, None), a[1]], 0.002)  # type: ignore[arg-type]
+    assert other.difference == "move 1 (line 3): a feed became a rapid"

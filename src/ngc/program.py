@@ -184,7 +184,8 @@ class Program:
         """The program written plain for ``target`` (see ``ngc flatten``): ``text``, ``lines``
         and ``verified`` (the written program run again and its machine path compared with
         this one's, within ``tolerance`` mm, which is also how close lines written for a curve
-        stay to it); ``toolchange``: ``pause``, ``strip`` or ``keep``.  Raises :class:`~ngc.flatten.Refused` with the line and the reason for a
+        stay to it); ``toolchange``: ``pause``, ``strip`` or ``keep``.  Raises
+        :class:`~ngc.flatten.Refused` with the line and the reason for a
         program that cannot be written truthfully, :class:`ValueError` for a target not written
         yet, :class:`NgcError` for a program error."""
         from .flatten import flatten

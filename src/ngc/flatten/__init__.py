@@ -1,46 +1,35 @@
 """``ngc flatten``: a program written out plain for a simpler controller, and verified.
 
 :func:`flatten` runs the program through the interpreter and the toolpath layer, writes each
-move with :class:`~ngc.flatten.writer.Flattener` for a target of :data:`~ngc.flatten.targets.TARGETS`,
-then runs what it wrote through the interpreter again, on the same machine inputs, and compares
-the two machine paths move by move (:class:`Verified`).  A program that cannot be written
-truthfully raises :class:`~ngc.flatten.writer.Refused`.
+move with :class:`~ngc.flatten.writer.Flattener` for a target of
+:data:`~ngc.flatten.targets.TARGETS`, and runs what it writes through the interpreter again as
+it is written, on the same machine inputs, comparing the two machine paths move by move
+(:mod:`.verify`, :mod:`.channel`).  A program that cannot be written truthfully raises
+:class:`~ngc.flatten.writer.Refused`.
 """
 
 from __future__ import annotations
 
-import io
-import math
-from collections.abc import Callable
-from typing import NamedTuple
+from collections.abc import Callable, Iterable
+from typing import NamedTuple, TextIO
 
 from ..canon import ops
 from ..canon.ops import Sink
 from ..config.tooltable import ToolEntry, scaled_entry
-from ..errors import NgcError
 from ..interp.interpreter import Interpreter
 from ..interp.parameters import COORD_STRIDE, G54_ORIGIN
-from ..render.curves import Frame
-from ..render.curves import frame as _frame
+from ..interp.source import ProgramReader
 from ..toolpath.frame import Pos
-from ..toolpath.tracker import ARC, FEED, ArcMove, Cubics, Tee, Toolpath
-from . import curves, writer
+from ..toolpath.tracker import ArcMove, Cubics, Tee, Toolpath
+from . import channel
 from .targets import TARGETS
+from .verify import FINE, Moves, Verified
 from .writer import MM_PER_INCH, Flattener, Refused
 
 __all__ = ["TARGETS", "Flattened", "Refused", "Verified", "flatten"]
 
 COORD_SYSTEM = 5220
-
-
-class Verified(NamedTuple):
-    """The comparison of the written program's machine path with the original's: the moves
-    compared, the largest distance between corresponding points (mm), and the first difference
-    that is not a distance (a move of another kind, a missing move), if any."""
-
-    moves: int
-    deviation: float
-    difference: str | None
+CHUNK = 4096  # lines written before they go to the output and the verification
 
 
 class Flattened(NamedTuple):
@@ -52,83 +41,88 @@ class Flattened(NamedTuple):
     verified: Verified | None
 
 
-# kind, end, an arc's centre, its turns, line, its axis (the normal, pointing so that the arc
-# turns counterclockwise about it: an arc about -X turning one way is the same arc as one about
-# +X turning the other), and its shape (the arc, or the points of a curve) where a target may
-# have written it as lines
-Move = tuple[str, Pos, "tuple[float, ...] | None", int, int, "tuple[float, ...] | None",
-             "ArcMove | list[Pos] | None"]
-CURVE = "curve"
-FINE = 0.02  # a curve's points for the verification: within this part of the tolerance
+class _Buffer:
+    """The writer's output, held until a chunk is full (``full``) and taken."""
+
+    def __init__(self) -> None:
+        self.parts: list[str] = []
+        self.full = False
+
+    def write(self, text: str) -> None:
+        self.parts.append(text)
+        if len(self.parts) >= CHUNK:
+            self.full = True
+
+    def take(self) -> str:
+        text = "".join(self.parts)
+        self.parts.clear()
+        self.full = False
+        return text
 
 
-class _Path:
-    """A reader of the toolpath keeping each move's kind, end, and an arc's centre and turns;
-    a G5 as its biarcs, a G5.1 / G5.2 curve as its points within ``fine`` mm."""
+class _Chunker:
+    """The last reader of the toolpath: once the writer's buffer is full, after a move (or
+    another call) has been written whole, hand the chunk on."""
 
-    def __init__(self, toolpath: Toolpath, fine: float) -> None:
-        self.toolpath = toolpath
-        self.fine = fine
-        self.moves: list[Move] = []
+    def __init__(self, flush: Callable[[], None], buffer: _Buffer) -> None:
+        self.flush = flush
+        self.buffer = buffer
 
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
-        self.moves.append((kind, end, None, 0, line, None, None))
+        if self.buffer.full:
+            self.flush()
 
     def arc(self, arc: ArcMove, line: int) -> None:
-        sign = 1.0 if arc.turns > 0 else -1.0
-        axis = tuple(sign * v for v in arc.normal)
-        self.moves.append((ARC, arc.end, arc.centre, abs(arc.turns), line, axis, arc))
+        if self.buffer.full:
+            self.flush()
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
-        to_machine = self.toolpath.frame.to_machine
-        if curves.is_cubic(curve):
-            a = start
-            for end, centre, turns in curves.cubic_pieces(curve, start, to_machine):
-                if centre is None:
-                    self.straight(FEED, a, end, line)
-                else:
-                    self.arc(ArcMove(a, end, centre, (0.0, 0.0, 1.0), turns, writer.NO_ARC, a),
-                             line)
-                a = end
-            return
-        points = curves.nurbs_points(curve, start, to_machine,
-                                     self.fine / self.toolpath.frame.scale)
-        self.moves.append((CURVE, points[-1] if points else start, None, 0, line, None,
-                           [start, *points]))
+        if self.buffer.full:
+            self.flush()
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
-        self.moves.append(("tap", bottom, None, 0, line, None, None))
+        if self.buffer.full:
+            self.flush()
 
     def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
-        self.moves.append(("bezier", start, None, 0, line, None, None))
+        if self.buffer.full:
+            self.flush()
 
     def other(self, op: ops.Op, line: int) -> None:
-        """Only the moves are compared."""
+        if self.buffer.full:
+            self.flush()
 
     def finish(self) -> None:
-        """Nothing is held back."""
+        """The end is flushed by :func:`flatten`."""
 
 
-def flatten(text: str, name: str, new_interpreter: Callable[[Sink], Interpreter], *,
-            target: str = "linuxcnc", inch: bool = False, decimals: int | None = None,
-            source_lines: bool = False, verify: bool = True, tolerance: float = 0.002,
-            toolchange: str | None = None) -> Flattened:
-    """The program ``text`` (named ``name``) written plain for ``target``, run by
-    ``new_interpreter(sink)`` (the machine inputs: :func:`ngc.options.new_interpreter`); raises
-    :class:`Refused` for a program that cannot be written truthfully, :class:`ValueError` for a
-    target not written yet, and :class:`~ngc.errors.NgcError` for a program error.
+def flatten(source: str | Iterable[str], name: str,
+            new_interpreter: Callable[[Sink], Interpreter], *, target: str = "linuxcnc",
+            inch: bool = False, decimals: int | None = None, source_lines: bool = False,
+            verify: bool = True, tolerance: float = 0.002, toolchange: str | None = None,
+            out: TextIO | None = None, reader: ProgramReader | None = None,
+            parallel: bool = True) -> Flattened:
+    """The program ``source`` (its text, or its lines; named ``name``) written plain for
+    ``target``, run by ``new_interpreter(sink)`` (the machine inputs:
+    :func:`ngc.options.new_interpreter`); raises :class:`Refused` for a program that cannot be
+    written truthfully, :class:`ValueError` for a target not written yet, and
+    :class:`~ngc.errors.NgcError` for a program error.
 
     Curves the target cannot run as they are become lines within ``tolerance`` mm;
     ``toolchange`` is ``pause``, ``strip`` or ``keep`` (default: keep where the target has M6,
-    else pause)."""
+    else pause).  The text is returned, or written to ``out`` as it is made (``text`` is then
+    empty; the caller keeps it only if the result is verified).  The verification runs beside
+    the writing, in a second process if ``parallel`` and the system forks (see
+    :mod:`.channel`); ``reader`` is the program file's reader when ``source`` reads from one
+    (see :meth:`Interpreter.run`)."""
     row = TARGETS.get(target)
     if row is None or not row.written:
         known = ", ".join(t for t, r in TARGETS.items() if r.written)
         raise ValueError(f"--target {target} is not supported yet (written: {known})")
     tee = Tee()
     toolpath = Toolpath(tee)
-    original = _Path(toolpath, tolerance * FINE)
-    out = io.StringIO()
+    original = Moves(toolpath, tolerance * FINE)
+    buffer = _Buffer()
     interp = new_interpreter(toolpath)
     origins, system = _origins(interp, 0)
     slots = list(interp.machine.state.tools.slots)  # (the operator's table: G10 L1 in the
@@ -138,20 +132,46 @@ def flatten(text: str, name: str, new_interpreter: Callable[[Sink], Interpreter]
         entry = next((e for e in slots[1:] if e.number == number), None)
         return None if entry is None else scaled_entry(entry, MM_PER_INCH)
 
-    writer = Flattener(toolpath, out, row, origins=origins, system=system, tool=tool,
+    writer = Flattener(toolpath, buffer, row, origins=origins, system=system, tool=tool,
                        inch=inch, decimals=decimals, source_lines=source_lines,
                        tolerance=tolerance, toolchange=toolchange)
-    tee.readers.extend((writer, original))
-    writer.header(name)
-    interp.startup()
-    interp.run(text.splitlines(), file=name)
-    written = out.getvalue()
-    if not writer.ended:  # (a program ended by %: so is the one written, or by M2)
-        written = "%\n" + written + "%\n" if row.percent else written + "M2\n"
-    checked = None
-    if verify:
-        checked = _verify(original, written, new_interpreter, tolerance)
-    return Flattened(written, writer.lines, checked)
+    kept: list[str] = []
+    checker: list[channel.Checker] = []  # (started with the first chunk)
+    first = [True]
+
+    def flush() -> None:
+        text = buffer.take()
+        if first[0]:
+            first[0] = False
+            if interp.percent and row.percent:  # (a program between % lines: so is this one)
+                text = "%\n" + text
+            if verify:
+                checker.append(channel.start(new_interpreter, tolerance, parallel))
+        if out is None:
+            kept.append(text)
+        else:
+            out.write(text)
+        if checker:
+            checker[0].send(text, original.moves)
+            original.moves = []
+        else:
+            original.moves.clear()
+
+    tee.readers.extend((writer, original, _Chunker(flush, buffer)))
+    try:
+        writer.header(name)
+        interp.startup()
+        lines = source.splitlines() if isinstance(source, str) else source
+        interp.run(lines, file=name, reader=reader)
+        if not writer.ended:  # (a program ended by %: so is the one written, or by M2)
+            writer.write("%" if row.percent else "M2")
+        flush()
+        checked = checker[0].finish() if checker else None
+    except BaseException:
+        if checker:
+            checker[0].close()
+        raise
+    return Flattened("".join(kept), writer.lines, checked)
 
 
 def _origins(interp: Interpreter, line: int) -> tuple[list[list[float]], int]:
@@ -171,145 +191,3 @@ def _origins(interp: Interpreter, line: int) -> tuple[list[list[float]], int]:
     return origins, min(max(system, 1), 9)
 
 
-def _axis_gap(m: Move, n: Move) -> float:
-    """How far apart the axes of two arcs about parallel axes are (their centres, less the part
-    along the axis: a helix's centre may be given at any height)."""
-    c, d, axis = m[2], n[2], m[5]
-    if c is None or d is None or axis is None:
-        return 0.0
-    gap = [c[i] - d[i] for i in range(3)]
-    along = sum(gap[i] * axis[i] for i in range(3))
-    return math.sqrt(sum((gap[i] - along * axis[i]) ** 2 for i in range(3)))
-
-
-def _verify(original: _Path, written: str, new_interpreter: Callable[[Sink], Interpreter],
-            tolerance: float) -> Verified:
-    """Run the written program on the same machine inputs and compare the machine paths."""
-    tee = Tee()
-    toolpath = Toolpath(tee)
-    again = _Path(toolpath, tolerance * FINE)
-    tee.readers.append(again)
-    interp = new_interpreter(toolpath)
-    interp.startup()
-    try:
-        interp.run(written.splitlines(), file="<flattened>")
-    except NgcError as exc:
-        return Verified(len(again.moves), math.inf,
-                        f"the program written stops at its line {exc.line}: {exc.explained()}")
-    return compare(original.moves, again.moves, tolerance)
-
-
-def compare(a: list[Move], b: list[Move], tolerance: float) -> Verified:
-    """The moves ``b`` against the moves ``a`` they should make: one to one, but for an arc of
-    several turns written one turn an arc, and a curve or an arc written as straight lines
-    (followed along its points)."""
-    worst = 0.0
-    i = j = 0
-    while i < len(a) and j < len(b):
-        m, n = a[i], b[j]
-        if m[0] == CURVE or (m[0] == ARC and n[0] == FEED):
-            shape = m[6]
-            if isinstance(shape, ArcMove):
-                shape = [shape.start, *curves.arc_points(shape, tolerance * FINE)]
-            assert shape is not None
-            j, deviation, difference = _follow(shape, b, j, tolerance)
-            worst = max(worst, deviation)
-            if difference is not None:
-                return Verified(i, worst, f"move {i + 1} (line {m[4]}): {difference}")
-            i += 1
-            continue
-        k = m[3]
-        if m[0] == ARC and k > 1 and n[0] == ARC and n[3] == 1:
-            run = b[j:j + k]
-            if len(run) == k and all(r[0] == ARC and r[3] == 1 and r[5] == n[5]
-                                     and _axis_gap(r, n) < 1e-6 for r in run):
-                n = (ARC, run[-1][1], n[2], k, n[4], n[5], None)
-                j += k - 1
-        if m[0] != n[0] or m[3] != n[3]:
-            return Verified(i, worst, f"move {i + 1} (line {m[4]}): a {m[0]} became a {n[0]}")
-        worst = max(worst, math.dist(m[1][:3], n[1][:3]),
-                    max(abs(x - y) for x, y in zip(m[1][3:], n[1][3:], strict=True)))
-        if m[2] is not None and n[2] is not None and m[5] is not None and n[5] is not None:
-            if math.dist(m[5], n[5]) > 1e-9:
-                return Verified(i, worst, f"move {i + 1} (line {m[4]}): the arc turns the "
-                                "other way")
-            shapes = m[6], n[6]
-            if isinstance(shapes[0], ArcMove) and isinstance(shapes[1], ArcMove):
-                worst = max(worst, _arc_gap(shapes[0], shapes[1]))
-            else:
-                worst = max(worst, _axis_gap(m, n))
-        i += 1
-        j += 1
-    if i < len(a) or j < len(b):
-        return Verified(i, worst, f"the moves differ in number after move {i}: {len(a) - i} "
-                        f"more of the original's, {len(b) - j} more of the written")
-    return Verified(len(a), worst, None)
-
-
-def curve_frame(arc: ArcMove) -> Frame:
-    """The arc's frame (centre, radii, sweep, rise)."""
-    return _frame(arc.start, arc.end, arc.centre, arc.normal, arc.turns)
-
-
-def _arc_gap(m: ArcMove, n: ArcMove) -> float:
-    """How far apart two arcs between (nearly) the same ends run: their points at the same
-    fractions of their sweeps (a nearly straight arc's centre may move far along the bisector
-    for a small change of its ends, its path hardly)."""
-    f, g = curve_frame(m), curve_frame(n)
-    return max(math.dist(f.point(f.sweep * k / 8), g.point(g.sweep * k / 8)) for k in range(1, 8))
-
-
-def _follow(points: list[Pos], b: list[Move], j: int,
-            tolerance: float) -> tuple[int, float, str | None]:
-    """Follow the curve through ``points`` (its start first) along the straight feeds of ``b``
-    from ``j``: each line's end is taken at the first point from the last end on that comes
-    within the tolerance (then the nearest in that run), and the curve's points between are
-    measured to the line.  The index after the last line, the largest distance, and what went
-    wrong if anything."""
-    last = len(points) - 1
-    at = 0
-    worst = 0.0
-    previous = points[0]
-    while at < last:
-        if j >= len(b) or b[j][0] != FEED:
-            kind = "nothing" if j >= len(b) else f"a {b[j][0]}"
-            return j, worst, f"a curve became {kind} before its end"
-        q = b[j][1]
-        k = _nearest(points, at, q, tolerance)
-        gap = min(_to_segment(q, points[max(k - 1, 0)], points[k]),
-                  _to_segment(q, points[k], points[min(k + 1, last)]))
-        for p in points[at + 1:k]:  # (the curve's points the line passes; the nearest to
-            gap = max(gap, _to_segment(p, previous, q))  # its ends are measured as ends)
-        worst = max(worst, gap)
-        j += 1
-        if k == at and gap > tolerance:
-            return j, worst, "a line leaves the curve"
-        previous, at = q, k
-    return j, worst, None
-
-
-def _nearest(points: list[Pos], at: int, q: Pos, tolerance: float) -> int:
-    """The point from ``at`` on that ``q`` stands at: the first run of points within the
-    tolerance of it, its nearest; else the nearest of all."""
-    best, best_d = at, math.inf
-    inside = False
-    for k in range(at, len(points)):
-        d = math.dist(points[k][:3], q[:3])
-        if d <= tolerance:
-            inside = True
-            if d < best_d:
-                best, best_d = k, d
-        elif inside:
-            break
-        elif d < best_d and not inside:
-            best, best_d = k, d
-    return best
-
-
-def _to_segment(p: Pos, a: Pos, b: Pos) -> float:
-    """The distance of ``p`` from the segment ``a`` ``b`` (X Y Z)."""
-    d = (b[0] - a[0], b[1] - a[1], b[2] - a[2])
-    w = (p[0] - a[0], p[1] - a[1], p[2] - a[2])
-    dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
-    t = 0.0 if dd == 0.0 else max(0.0, min(1.0, (w[0] * d[0] + w[1] * d[1] + w[2] * d[2]) / dd))
-    return math.dist(p[:3], (a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]))

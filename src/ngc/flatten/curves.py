@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from typing import NamedTuple
 
 from ..canon import ops
 from ..planner.geometry import cubic_biarcs, nurbs_polyline
@@ -17,6 +18,19 @@ from ..toolpath.frame import Pos
 from ..toolpath.tracker import ArcMove
 
 ToMachine = Callable[[Pos], Pos]
+NO_ARC = ops.ArcFeed(0.0, 0.0, 0.0, 0.0, 0, 0.0, 0.0, 0.0, 0.0)  # (a G5's biarcs have no call)
+
+
+class ArcShape(NamedTuple):
+    """An arc as the verification needs it (what :class:`ArcMove` says of its shape)."""
+
+    start: Pos
+    end: Pos
+    centre: tuple[float, float, float]
+    normal: tuple[float, float, float]
+    turns: int
+
+
 # A piece of a curve: its end, and an arc's centre and turns (None, 0: a straight line).
 Piece = tuple[Pos, "tuple[float, float, float] | None", int]
 
@@ -53,7 +67,7 @@ def nurbs_points(curve: ops.NurbsFeed, start: Pos, to_machine: ToMachine,
     return out
 
 
-def arc_points(arc: ArcMove, tolerance: float) -> list[Pos]:
+def arc_points(arc: ArcMove | ArcShape, tolerance: float) -> list[Pos]:
     """Points along an arc (or helix), after its start and up to its end, the lines between
     them within ``tolerance`` of it (the chord's sagitta); A B C move with it in proportion."""
     f = curves.frame(arc.start, arc.end, arc.centre, arc.normal, arc.turns)

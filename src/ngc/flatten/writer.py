@@ -15,14 +15,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from typing import TextIO
+from typing import Protocol
 
 from ..canon import ops
 from ..config.tooltable import ToolEntry
 from ..render import curves
 from ..toolpath.frame import Pos
-from ..toolpath.tracker import FEED, PROBE, RAPID, SYNC, ArcMove, Cubics, Toolpath
-from .curves import arc_points, cubic_pieces, is_cubic, nurbs_points
+from ..toolpath.tracker import FEED, PROBE, RAPID, ArcMove, Cubics, Toolpath
+from .curves import NO_ARC, arc_points, cubic_pieces, is_cubic, nurbs_points
 from .targets import Target
 
 MM_PER_INCH = 25.4
@@ -30,10 +30,9 @@ SYSTEMS = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
 AXES = "XYZABC"
 LINEAR = (True, True, True, False, False, False)
 # An arc's plane by its normal, and the offset words of each plane with their axes.
-_PLANES = {(0, 0, 1): "G17", (0, 1, 0): "G18", (1, 0, 0): "G19"}
+_PLANES = {(0.0, 0.0, 1.0): "G17", (0.0, 1.0, 0.0): "G18", (1.0, 0.0, 0.0): "G19"}
 _OFFSETS = {"G17": (("I", 0), ("J", 1)), "G18": (("I", 0), ("K", 2)),
             "G19": (("J", 1), ("K", 2))}
-NO_ARC = ops.ArcFeed(0.0, 0.0, 0.0, 0.0, 0, 0.0, 0.0, 0.0, 0.0)  # (a G5's biarcs have no call)
 TOOL_CHANGES = ("pause", "strip", "keep")
 # Canon operations that change nothing the output must say: resolved into the coordinates or
 # said by the moves themselves.
@@ -56,6 +55,12 @@ _OUTPUTS: dict[type, tuple[str, str]] = {
 }
 
 
+class Output(Protocol):
+    """Where the lines go."""
+
+    def write(self, text: str) -> object: ...
+
+
 class Refused(Exception):
     """A program that cannot be flattened truthfully: the line and the reason."""
 
@@ -72,7 +77,7 @@ class Flattener:
     X Y Z A B C, by system 1-9) and ``system`` the one selected then; ``tool`` finds a tool's
     entry in the table (lengths in mm); ``inch`` writes in inches (else mm)."""
 
-    def __init__(self, toolpath: Toolpath, out: TextIO, target: Target, *,
+    def __init__(self, toolpath: Toolpath, out: Output, target: Target, *,
                  origins: Sequence[Sequence[float]], system: int,
                  tool: Callable[[int], ToolEntry | None], inch: bool = False,
                  decimals: int | None = None, source_lines: bool = False,
@@ -102,10 +107,14 @@ class Flattener:
         self.feed_written: str | None = None
         self.per_rev = False
         self.per_rev_written = False
+        self.feed_key: tuple[float, bool, float, str] | None = None
         self.selected = 0
         self.naive = 0.0
-        self.where: list[float | None] = [None] * 6  # the output's current position (as written)
+        self.where: list[str | None] = [None] * 6  # the output's current position (as written)
         self.raw: list[float | None] = [None] * 6  # and the coordinates it was written from
+        self.shift: tuple[float, ...] = tuple(origins[system - 1])  # (+ the kept tool length)
+        self.inverse = 1.0 / self.scale
+        self.format = f"%.{self.decimals}f"
         self.lines = 0
         self.plane = "G17"
         self.ended = False  # M2 or M30 written
@@ -130,46 +139,63 @@ class Flattener:
         self._system_words(self.system, 0)
 
     def _number(self, v: float) -> str:
-        text = f"{v:.{self.decimals}f}"
-        if "." in text:
-            text = text.rstrip("0").rstrip(".")
-        return "0" if text in ("-0", "") else text
+        text = (self.format % v).rstrip("0")
+        if text[-1] == ".":
+            text = text[:-1]
+        return "0" if text == "-0" else text
 
-    def _coordinates(self, p: Sequence[float], line: int) -> list[float]:
+    def _forget(self) -> None:
+        """The offsets changed: the next move says every axis again, from the new shift."""
+        origin, kept = self.origins[self.system - 1], self.kept_offset
+        self.shift = tuple(origin[i] + kept[i] for i in range(6))
+        self.where = [None] * 6
+        self.raw = [None] * 6
+
+    def _coordinates(self, p: Sequence[float], line: int) -> tuple[float, ...]:
         """A machine point (mm, degrees) in the output's coordinates and units."""
-        origin = self.origins[self.system - 1]
-        out = []
-        for i in range(6):
-            v = p[i] - origin[i] - self.kept_offset[i]
-            if LINEAR[i]:
-                v /= self.scale
-            if not math.isfinite(v):
-                raise Refused(line, "a coordinate past a double's range")
-            out.append(v)
-        return out
+        o, k = self.shift, self.inverse
+        x, y, z = (p[0] - o[0]) * k, (p[1] - o[1]) * k, (p[2] - o[2]) * k
+        a, b, c = p[3] - o[3], p[4] - o[4], p[5] - o[5]
+        if (x + y + z + a + b + c) * 0.0 != 0.0:  # (an infinity or not a number)
+            raise Refused(line, "a coordinate past a double's range")
+        return (x, y, z, a, b, c)
 
     def _axes(self, q: Sequence[float], force: bool = False) -> str:
         """The axis words that change (``force``: X Y Z whatever; A B C only once they are
         away from 0, so that a program for three axes has no rotary word)."""
         words = []
-        raw = self.raw
-        for i, axis in enumerate(AXES):
+        raw, where, number = self.raw, self.where, self._number
+        for i in (0, 1, 2):
             v = q[i]
-            if v == raw[i] and not (force and i < 3):
+            if v == raw[i] and not force:
                 continue  # (the same coordinate as the move before: the same word)
             raw[i] = v
-            text = self._number(v)
-            value = float(text)
-            was = self.where[i]
-            if i >= 3 and was is None and value == 0.0:
-                self.where[i] = 0.0
+            text = number(v)
+            if text == where[i] and not force:
                 continue
-            if (force and i < 3) or was != value:
-                words.append(f"{axis}{text}")
-                self.where[i] = value
+            words.append(AXES[i] + text)
+            where[i] = text
+        if q[3] != raw[3] or q[4] != raw[4] or q[5] != raw[5]:
+            for i in (3, 4, 5):
+                v = q[i]
+                if v == raw[i]:
+                    continue
+                raw[i] = v
+                text = number(v)
+                was = where[i]
+                if text == was or (was is None and text == "0"):
+                    where[i] = text
+                    continue
+                words.append(AXES[i] + text)
+                where[i] = text
         return " ".join(words)
 
     def _feed_words(self, line: int = 0) -> str:
+        """The feed's words where it changed (G94/G95 and F), else ''."""
+        key = (self.feed_mm, self.per_rev, self.rpm, self.spindle_on)
+        if key == self.feed_key:
+            return ""
+        self.feed_key = key
         words = []
         feed = self.feed_mm
         if self.per_rev and not self.target.feed_per_rev:
@@ -189,76 +215,76 @@ class Flattener:
 
     # -- the toolpath's consumer protocol -----------------------------------------------------
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
-        if kind == PROBE:
-            raise Refused(line, "probing: where the probe stops is known only at the machine")
-        if kind == SYNC:
-            raise Refused(line, "spindle-synchronised motion (G33, G76) is not flattened yet")
-        q = self._coordinates(end, line)
-        code = "G0" if kind == RAPID else "G1"
-        axes = self._axes(q)
-        words = [code]
         if kind == FEED:
+            code = "G1"
             feed = self._feed_words(line)
             if feed:
-                words.append(feed)
-        if not axes:
-            axes = self._axes(q, force=True)  # (a move of no length still goes in)
-        words.append(axes)
-        self.write(" ".join(words), line)
+                code = "G1 " + feed
+        elif kind == RAPID:
+            code = "G0"
+        elif kind == PROBE:
+            raise Refused(line, "probing: where the probe stops is known only at the machine")
+        else:
+            raise Refused(line, "spindle-synchronised motion (G33, G76) is not flattened yet")
+        q = self._coordinates(end, line)
+        axes = self._axes(q) or self._axes(q, force=True)  # (a move of no length still goes in)
+        self.write(code + " " + axes, line)
 
     def arc(self, arc: ArcMove, line: int) -> None:
         n = arc.normal
-        key = (round(n[0]), round(n[1]), round(n[2]))
-        sign = 1
-        if key not in _PLANES:
-            key, sign = (-key[0], -key[1], -key[2]), -1
-        code = _PLANES.get(key)
-        rise = sum((arc.end[i] - arc.start[i]) * n[i] for i in range(3))
-        if (code is None or max(abs(v) for v in n) < 1.0 - 1e-12
-                or code not in self.target.arc_planes
-                or (abs(rise) > 1e-9 and not self.target.helix)):
+        code, sign = _PLANES.get(n), 1  # (exactly on an axis, most arcs: or else)
+        if code is None:
+            code, sign = _PLANES.get((-n[0], -n[1], -n[2])), -1
+        target = self.target
+        if code is None or code not in target.arc_planes or (not target.helix and abs(
+                sum((arc.end[i] - arc.start[i]) * n[i] for i in range(3))) > 1e-9):
             # (a plane the XY rotation turns off the axes, or one the target lacks, or a helix
             # it cannot cut: straight lines within the tolerance)
             for point in arc_points(arc, self.chord):
                 self.straight(FEED, arc.start, point, line)
             return
         turns = arc.turns * sign
-        if abs(turns) > 1 and not self.target.turns:
+        if (turns > 1 or turns < -1) and not target.turns:
             self._turns(arc, turns, line)
             return
         first, second = _OFFSETS[code]
         was = (self.where[first[1]], self.where[second[1]])
-        s = self._coordinates(arc.start, line)
         q = self._coordinates(arc.end, line)
-        c = self._coordinates((*arc.centre, 0.0, 0.0, 0.0), line)
-        words = [] if code == self.plane else [code]
+        centre = arc.centre
+        c = self._coordinates((centre[0], centre[1], centre[2], 0.0, 0.0, 0.0), line)
+        words = ("G3" if turns > 0 else "G2") if code == self.plane else (
+            code + (" G3" if turns > 0 else " G2"))
         self.plane = code
-        words.append("G3" if turns > 0 else "G2")
         feed = self._feed_words(line)
         if feed:
-            words.append(feed)
-        words.append(self._axes(q, force=True))
-        words.append(self._centre_words(first, second, was, s, c))
-        if abs(turns) > 1:
-            words.append(f"P{abs(turns)}")
-        self.write(" ".join(words), line)
+            words += " " + feed
+        words += " " + self._axes(q, force=True) + " " + self._centre_words(
+            first, second, was, arc.start, c, line)
+        if turns > 1 or turns < -1:
+            words += f" P{abs(turns)}"
+        self.write(words, line)
 
     def _centre_words(self, first: tuple[str, int], second: tuple[str, int],
-                      was: tuple[float | None, float | None], s: Sequence[float],
-                      c: Sequence[float]) -> str:
+                      was: tuple[str | None, str | None], start: Pos,
+                      c: Sequence[float], line: int) -> str:
         """The centre's offset words from the start as written.  Where the rounded numbers
         leave the radii to the written start and end more than a unit of the last decimal
         apart, the centre moves onto the perpendicular bisector of the two (the nearest such
         point to the true one), so that they agree but for the offsets' own rounding (Grbl's
         error:33, rs274's "radius to end of arc differs")."""
         i, j = first[1], second[1]
-        sx = was[0] if was[0] is not None else float(self._number(s[i]))
-        sy = was[1] if was[1] is not None else float(self._number(s[j]))
-        ex, ey = self.where[i], self.where[j]
+        a0, b0 = was
+        if a0 is None or b0 is None:  # (the start as it would be written)
+            s = self._coordinates(start, line)
+            a0 = self._number(s[i]) if a0 is None else a0
+            b0 = self._number(s[j]) if b0 is None else b0
+        sx, sy = float(a0), float(b0)
+        end = self.where[i], self.where[j]
         cx, cy = c[i], c[j]
         a, b = self._number(cx - sx), self._number(cy - sy)
-        if ex is None or ey is None:
+        if end[0] is None or end[1] is None:
             return f"{first[0]}{a} {second[0]}{b}"
+        ex, ey = float(end[0]), float(end[1])
         ox, oy = sx + float(a), sy + float(b)
         unit = 10.0 ** -self.decimals
         if abs(math.hypot(sx - ox, sy - oy) - math.hypot(ex - ox, ey - oy)) > unit:
@@ -315,8 +341,7 @@ class Flattener:
             system = op.system  # type: ignore[attr-defined]
             if system != self.system:
                 self.system = system
-                self.where = [None] * 6
-                self.raw = [None] * 6
+                self._forget()
                 self._system_words(system, line)
         elif kind is ops.UseToolLengthOffset:
             self._tool_length(line)
@@ -463,14 +488,12 @@ class Flattener:
                     self.write(words, line)
                 self.kept = number
                 self.kept_offset = tuple(entry.offsets[:6])  # type: ignore[assignment]
-                self.where = [None] * 6
-                self.raw = [None] * 6
+                self._forget()
                 return
         if self.kept is not None:
             self.write("G49", line)
         self.kept, self.kept_offset = None, (0.0,) * 6
-        self.where = [None] * 6
-        self.raw = [None] * 6
+        self._forget()
 
 
 def _significant(text: str) -> str:
