@@ -6,6 +6,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -188,7 +189,8 @@ def test_grbl_gets_what_grbl_takes(tmp_path: Path) -> None:
     assert sum(1 for line in body if line.startswith("G3 ")) == 3  # P3: three arcs of a turn
     change = body.index("(tool change: put in tool 2, diameter 12.7, then resume)")
     assert body[change - 1] == "M5" and body[change + 1] == "M0"  # (M6 stops the spindle)
-    assert body.count("M5") == 3  # (no M5 twice: canon's stop is the one written)
+    assert body.count("M5") == 1  # (the spindle stops once: canon's stops of a standing
+    # spindle, at the first change and at the end, are not written)
     assert all(len(re.sub(r"\([^)]*\)|\s", "", line)) <= 79 for line in body)
     assert "largest deviation 0.00" in done.stderr
 
@@ -248,13 +250,53 @@ def test_the_comparison_finds_a_moved_end_and_a_missing_move() -> None:
     from ngc.flatten.verify import compare
 
     zero = (0.0,) * 6
-    a = [("feed", (1.0, 0.0, 0.0, 0.0, 0.0, 0.0), None, 0, 3, None, None),
-         ("rapid", (1.0, 2.0, 0.0, 0.0, 0.0, 0.0), None, 0, 4, None, None)]
+    a = [("feed", (1.0, 0.0, 0.0, 0.0, 0.0, 0.0), None, 0, 3, None, None, 100.0),
+         ("rapid", (1.0, 2.0, 0.0, 0.0, 0.0, 0.0), None, 0, 4, None, None, 0.0)]
     same = compare(a, list(a), 0.002)  # type: ignore[arg-type]
     assert same.difference is None and same.deviation == 0.0 and same.moves == 2
-    moved = [a[0], ("rapid", (1.0, 2.01, 0.0, 0.0, 0.0, 0.0), None, 0, 9, None, None)]
+    moved = [a[0], ("rapid", (1.0, 2.01, 0.0, 0.0, 0.0, 0.0), None, 0, 9, None, None, 0.0)]
     assert abs(compare(a, moved, 0.002).deviation - 0.01) < 1e-12  # type: ignore[arg-type]
     missing = compare(a, a[:1], 0.002)  # type: ignore[arg-type]
     assert missing.difference is not None and "1 more of the original's" in missing.difference
-    other = compare(a, [("rapid", zero, None, 0, 1, None, None), a[1]], 0.002)  # type: ignore[arg-type]
+    other = compare(a, [("rapid", zero, None, 0, 1, None, None, 0.0), a[1]], 0.002)  # type: ignore[arg-type]
     assert other.difference == "move 1 (line 3): a feed became a rapid"
+    slower = compare(a, [(*a[0][:7], 99.0), a[1]], 0.002)  # type: ignore[arg-type]
+    assert slower.difference == "move 1 (line 3): the feed 100 became 99"
+
+
+sys.path.insert(0, str(ROOT / "tests" / "golden"))
+import flatten_regen  # noqa: E402
+
+GOLDEN = [(p, t) for p in flatten_regen.programs() for t in flatten_regen.TARGETS]
+
+
+@pytest.mark.parametrize(("program", "target"), GOLDEN,
+                         ids=[f"{p.stem}-{t}" for p, t in GOLDEN])
+def test_golden_outputs(program: Path, target: str) -> None:
+    done = flatten_regen.flatten(program, target)
+    written, refused = flatten_regen.golden(program, target)
+    if refused.exists():
+        assert done.returncode == 1 and done.stdout == ""
+        assert done.stderr == refused.read_text()
+        return
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == written.read_text()
+    assert not NOT_PLAIN.search(_code(done.stdout))
+
+
+RS274 = shutil.which("rs274")
+
+
+@pytest.mark.skipif(RS274 is None, reason="rs274 (LinuxCNC) is not installed")
+@pytest.mark.parametrize("program", [p for p, t in GOLDEN if t == "linuxcnc"],
+                         ids=[p.stem for p, t in GOLDEN if t == "linuxcnc"])
+def test_golden_linuxcnc_outputs_run_in_rs274(tmp_path: Path, program: Path) -> None:
+    written, _refused = flatten_regen.golden(program, "linuxcnc")
+    if not written.exists():
+        pytest.skip("refused")
+    assert RS274 is not None
+    done = subprocess.run([RS274, "-i", "machine.ini", "-t", "tools.tbl", "-g", str(written)],
+                          cwd=program.parent, capture_output=True, text=True, timeout=60)
+    errors = [line for line in done.stderr.splitlines() if line.strip() not in ("", "executing")]
+    assert done.returncode == 0 and not errors, done.stderr
+    assert "PROGRAM_END" in done.stdout

@@ -30,6 +30,7 @@ class Target(NamedTuple):
     header: str = "G90 G91.1 G94 G40 G49 G80 G17 G97"  # the modes set at the start
     percent: bool = True  # a program ended by % is written between % lines (else: M2 at the end)
     io: bool = True  # M62-M65 digital outputs, M67/M68 analog outputs
+    mist: bool = True  # M7
 
 
 TARGETS = MappingProxyType({
@@ -39,7 +40,8 @@ TARGETS = MappingProxyType({
     # only), no G61/G64, no G95, G54-G59 only, no G96/G97, 79 characters (error:11)
     "grbl": Target("grbl", frozenset({"G17", "G18", "G19"}), True, False, "G43.1", False, False,
                    False, 3, 4, 79, True, systems=6, css=False,
-                   header="G90 G91.1 G94 G40 G49 G80 G17", percent=False, io=False),
+                   header="G90 G91.1 G94 G40 G49 G80 G17", percent=False, io=False,
+                   mist=False),
     "grblhal": Target("grblhal", frozenset({"G17", "G18", "G19"}), True, False, "none", False,
                       True, False, 3, 4, 255, False),
     "fluidnc": Target("fluidnc", frozenset({"G17", "G18", "G19"}), True, False, "none", False,

@@ -19,7 +19,7 @@ from ..interp.interpreter import Interpreter
 from ..render.curves import Frame
 from ..render.curves import frame as _frame
 from ..toolpath.frame import Pos
-from ..toolpath.tracker import ARC, FEED, ArcMove, Cubics, Tee, Toolpath
+from ..toolpath.tracker import ARC, FEED, RAPID, ArcMove, Cubics, Tee, Toolpath
 from . import curves
 from .curves import ArcShape
 
@@ -36,12 +36,14 @@ class Verified(NamedTuple):
 
 # kind, end, an arc's centre, its turns, line, its axis (the normal, pointing so that the arc
 # turns counterclockwise about it: an arc about -X turning one way is the same arc as one about
-# +X turning the other), and its shape (the arc, or the points of a curve) where a target may
-# have written it as lines
+# +X turning the other), its shape (the arc, or the points of a curve) where a target may have
+# written it as lines, and its feed (machine units a minute, at the spindle speed for a feed per
+# revolution; 0 for a rapid)
 Move = tuple[str, Pos, "tuple[float, ...] | None", int, int, "tuple[float, ...] | None",
-             "ArcShape | list[Pos] | None"]
+             "ArcShape | list[Pos] | None", float]
 CURVE = "curve"
 FINE = 0.02  # a curve's points for the verification: within this part of the tolerance
+FEED_TOLERANCE = 1e-3  # mm a minute, and as much a thousand: feeds the same but for rounding
 
 
 class Moves:
@@ -52,15 +54,21 @@ class Moves:
         self.toolpath = toolpath
         self.fine = fine
         self.moves: list[Move] = []
+        self.rate = 0.0  # the feed as canon set it, in machine units
+        self.per_rev = False
+        self.rpm = 0.0
+        self.feed = 0.0
 
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
-        self.moves.append((kind, end, None, 0, line, None, None))
+        self.moves.append((kind, end, None, 0, line, None, None,
+                           0.0 if kind == RAPID else self.feed))
 
     def arc(self, arc: ArcMove, line: int) -> None:
         sign = 1.0 if arc.turns > 0 else -1.0
         axis = tuple(sign * v for v in arc.normal)
         self.moves.append((ARC, arc.end, arc.centre, abs(arc.turns), line, axis,
-                           ArcShape(arc.start, arc.end, arc.centre, arc.normal, arc.turns)))
+                           ArcShape(arc.start, arc.end, arc.centre, arc.normal, arc.turns),
+                           self.feed))
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
         to_machine = self.toolpath.frame.to_machine
@@ -77,16 +85,26 @@ class Moves:
         points = curves.nurbs_points(curve, start, to_machine,
                                      self.fine / self.toolpath.frame.scale)
         self.moves.append((CURVE, points[-1] if points else start, None, 0, line, None,
-                           [start, *points]))
+                           [start, *points], self.feed))
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
-        self.moves.append(("tap", bottom, None, 0, line, None, None))
+        self.moves.append(("tap", bottom, None, 0, line, None, None, self.feed))
 
     def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
-        self.moves.append(("bezier", start, None, 0, line, None, None))
+        self.moves.append(("bezier", start, None, 0, line, None, None, self.feed))
 
     def other(self, op: ops.Op, line: int) -> None:
-        """Only the moves are compared."""
+        """The feed each move runs at."""
+        kind = type(op)
+        if kind is ops.SetFeedRate:
+            self.rate = op.rate * self.toolpath.frame.scale  # type: ignore[attr-defined]
+        elif kind is ops.SetFeedMode:
+            self.per_rev = op.mode == 1  # type: ignore[attr-defined]
+        elif kind is ops.SetSpindleSpeed:
+            self.rpm = op.rpm  # type: ignore[attr-defined]
+        else:
+            return
+        self.feed = self.rate * self.rpm if self.per_rev else self.rate
 
     def finish(self) -> None:
         """Nothing is held back."""
@@ -159,7 +177,7 @@ def compare(a: list[Move], b: list[Move], tolerance: float, start: int = 0) -> V
             if isinstance(shape, ArcShape):
                 shape = [shape.start, *curves.arc_points(shape, tolerance * FINE)]
             assert shape is not None
-            j, deviation, difference = _follow(shape, b, j, tolerance)
+            j, deviation, difference = _follow(shape, m[7], b, j, tolerance)
             worst = max(worst, deviation)
             if difference is not None:
                 return Verified(i, worst, f"move {start + i + 1} (line {m[4]}): {difference}")
@@ -170,26 +188,31 @@ def compare(a: list[Move], b: list[Move], tolerance: float, start: int = 0) -> V
             run = b[j:j + k]
             if len(run) == k and all(r[0] == ARC and r[3] == 1 and r[5] == n[5]
                                      and _axis_gap(r, n) < 1e-6 for r in run):
-                n = (ARC, run[-1][1], n[2], k, n[4], n[5], None)
+                n = (ARC, run[-1][1], n[2], k, n[4], n[5], None, n[7])
                 j += k - 1
         if m[0] != n[0] or m[3] != n[3]:
-            return Verified(i, worst, f"move {start + i + 1} (line {m[4]}): a {m[0]} became a {n[0]}")
+            return Verified(i, worst, f"move {start + i + 1} (line {m[4]}): a {m[0]} became a "
+                            f"{n[0]}")
+        if not _same_feed(m[7], n[7]):
+            return Verified(i, worst, f"move {start + i + 1} (line {m[4]}): the feed "
+                            f"{m[7]:.6g} became {n[7]:.6g}")
         worst = max(worst, math.dist(m[1][:3], n[1][:3]),
                     max(abs(x - y) for x, y in zip(m[1][3:], n[1][3:], strict=True)))
         if m[2] is not None and n[2] is not None and m[5] is not None and n[5] is not None:
             if math.dist(m[5], n[5]) > 1e-9:
                 return Verified(i, worst, f"move {start + i + 1} (line {m[4]}): the arc turns the "
                                 "other way")
+            gap = _axis_gap(m, n)
             shapes = m[6], n[6]
-            if isinstance(shapes[0], ArcShape) and isinstance(shapes[1], ArcShape):
-                worst = max(worst, _arc_gap(shapes[0], shapes[1]))
-            else:
-                worst = max(worst, _axis_gap(m, n))
+            if (gap > 0.25 * tolerance and isinstance(shapes[0], ArcShape)
+                    and isinstance(shapes[1], ArcShape)):
+                gap = min(gap, _arc_gap(shapes[0], shapes[1]))  # (a nearly straight arc)
+            worst = max(worst, gap)
         i += 1
         j += 1
     if i < len(a) or j < len(b):
-        return Verified(i, worst, f"the moves differ in number after move {start + i}: {len(a) - i} "
-                        f"more of the original's, {len(b) - j} more of the written")
+        return Verified(i, worst, f"the moves differ in number after move {start + i}: "
+                        f"{len(a) - i} more of the original's, {len(b) - j} more of the written")
     return Verified(len(a), worst, None)
 
 
@@ -206,7 +229,11 @@ def _arc_gap(m: ArcShape, n: ArcShape) -> float:
     return max(math.dist(f.point(f.sweep * k / 8), g.point(g.sweep * k / 8)) for k in range(1, 8))
 
 
-def _follow(points: list[Pos], b: list[Move], j: int,
+def _same_feed(f: float, g: float) -> bool:
+    return abs(f - g) <= FEED_TOLERANCE * max(1.0, abs(f))
+
+
+def _follow(points: list[Pos], feed: float, b: list[Move], j: int,
             tolerance: float) -> tuple[int, float, str | None]:
     """Follow the curve through ``points`` (its start first) along the straight feeds of ``b``
     from ``j``: each line's end is taken at the first point from the last end on that comes
@@ -221,6 +248,8 @@ def _follow(points: list[Pos], b: list[Move], j: int,
         if j >= len(b) or b[j][0] != FEED:
             kind = "nothing" if j >= len(b) else f"a {b[j][0]}"
             return j, worst, f"a curve became {kind} before its end"
+        if not _same_feed(feed, b[j][7]):
+            return j, worst, f"the feed {feed:.6g} became {b[j][7]:.6g}"
         q = b[j][1]
         k = _nearest(points, at, q, tolerance)
         gap = min(_to_segment(q, points[max(k - 1, 0)], points[k]),

@@ -121,6 +121,7 @@ class Flattener:
         self.shuttle = False  # a pallet shuttle waits for what comes with it (M30, M60)
         self.rpm = 0.0
         self.spindle_on = ""  # "M3", "M4", or "" when it stands
+        self.coolant = False
 
     # -- writing ------------------------------------------------------------------------------
     def write(self, text: str, line: int = 0) -> None:
@@ -370,8 +371,9 @@ class Flattener:
             self.spindle_on = "M4"
             self.write("M4", line)
         elif kind is ops.StopSpindleTurning:
+            if self.spindle_on:  # (canon stops a standing spindle again: at M6, at the end)
+                self.write("M5", line)
             self.spindle_on = ""
-            self.write("M5", line)
         elif kind is ops.SetSpindleMode:
             css = op.css_max  # type: ignore[attr-defined]
             if css > 0.0 or not self.target.css:
@@ -396,11 +398,18 @@ class Flattener:
         elif kind is ops.Dwell:
             self.write(f"G4 P{self._number(op.seconds)}", line)  # type: ignore[attr-defined]
         elif kind is ops.FloodOn:
+            self.coolant = True
             self.write("M8", line)
         elif kind is ops.MistOn:
+            if not self.target.mist:
+                raise Refused(line, f"mist coolant (M7): {self.target.name} has none in its "
+                              "default build")
+            self.coolant = True
             self.write("M7", line)
         elif kind in (ops.FloodOff, ops.MistOff):
-            self.write("M9", line)
+            if self.coolant:  # (M9 is both: canon says each)
+                self.write("M9", line)
+            self.coolant = False
         elif kind is ops.Comment:
             text = op.text  # type: ignore[attr-defined]
             if not text.startswith("interpreter: "):  # (rs274's notes of its own changes)

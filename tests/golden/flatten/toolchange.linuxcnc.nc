@@ -1,0 +1,26 @@
+(flattened by ngc from toolchange.ngc for linuxcnc)
+G21 G90 G91.1 G94 G40 G49 G80 G17 G97
+G54
+(two tools from the table with their lengths, a coolant and a dwell)
+G0 X0 Y0 Z50
+T1 M6
+G43 H1
+S9000
+M3
+M8
+G0 X10 Y10 Z2
+G1 F400 Z-1
+G1 X30
+G4 P1.5
+G0 Z50
+M9
+M5
+T2 M6
+G43 H2
+S3000
+M3
+G0 X20 Y20 Z2
+G1 F120 Z-8
+G0 Z50
+M5
+M30
