@@ -31,6 +31,8 @@ class Target(NamedTuple):
     percent: bool = True  # a program ended by % is written between % lines (else: M2 at the end)
     io: bool = True  # M62-M65 digital outputs, M67/M68 analog outputs
     mist: bool = True  # M7
+    sync: bool = True  # G33 and G33.1, spindle-synchronised motion (G76 is written as G33)
+    orient: bool = True  # M19
 
 
 TARGETS = MappingProxyType({
@@ -41,7 +43,7 @@ TARGETS = MappingProxyType({
     "grbl": Target("grbl", frozenset({"G17", "G18", "G19"}), True, False, "G43.1", False, False,
                    False, 3, 4, 79, True, systems=6, css=False,
                    header="G90 G91.1 G94 G40 G49 G80 G17", percent=False, io=False,
-                   mist=False),
+                   mist=False, sync=False, orient=False),
     "grblhal": Target("grblhal", frozenset({"G17", "G18", "G19"}), True, False, "none", False,
                       True, False, 3, 4, 255, False),
     "fluidnc": Target("fluidnc", frozenset({"G17", "G18", "G19"}), True, False, "none", False,

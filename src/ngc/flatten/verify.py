@@ -19,7 +19,7 @@ from ..interp.interpreter import Interpreter
 from ..render.curves import Frame
 from ..render.curves import frame as _frame
 from ..toolpath.frame import Pos
-from ..toolpath.tracker import ARC, FEED, RAPID, ArcMove, Cubics, Tee, Toolpath
+from ..toolpath.tracker import ARC, FEED, RAPID, SYNC, ArcMove, Cubics, Tee, Toolpath
 from . import curves
 from .curves import ArcShape
 
@@ -58,10 +58,11 @@ class Moves:
         self.per_rev = False
         self.rpm = 0.0
         self.feed = 0.0
+        self.sync = 0.0
 
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
         self.moves.append((kind, end, None, 0, line, None, None,
-                           0.0 if kind == RAPID else self.feed))
+                           0.0 if kind == RAPID else self.sync if kind == SYNC else self.feed))
 
     def arc(self, arc: ArcMove, line: int) -> None:
         sign = 1.0 if arc.turns > 0 else -1.0
@@ -88,7 +89,7 @@ class Moves:
                            [start, *points], self.feed))
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
-        self.moves.append(("tap", bottom, None, 0, line, None, None, self.feed))
+        self.moves.append(("tap", bottom, None, 0, line, None, None, self.sync))
 
     def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
         self.moves.append(("bezier", start, None, 0, line, None, None, self.feed))
@@ -102,6 +103,9 @@ class Moves:
             self.per_rev = op.mode == 1  # type: ignore[attr-defined]
         elif kind is ops.SetSpindleSpeed:
             self.rpm = op.rpm  # type: ignore[attr-defined]
+        elif kind is ops.StartSpeedFeedSync:  # (a distance a revolution, as a feed)
+            self.sync = op.per_rev * self.toolpath.frame.scale  # type: ignore[attr-defined]
+            return
         else:
             return
         self.feed = self.rate * self.rpm if self.per_rev else self.rate

@@ -94,6 +94,7 @@ class Flattener:
             target.decimals_inch if inch else target.decimals_mm)
         self.source_lines = source_lines
         # lines for a curve stay this close to it (mm), less what rounding the ends may move
+        self.tolerance = tolerance
         rounding = 0.5 * 10.0 ** -self.decimals * self.scale * math.sqrt(3.0)
         self.chord = max(tolerance - rounding, 0.25 * tolerance)
         self.toolchange = toolchange or ("keep" if target.tool_change else "pause")
@@ -122,6 +123,9 @@ class Flattener:
         self.rpm = 0.0
         self.spindle_on = ""  # "M3", "M4", or "" when it stands
         self.coolant = False
+        self.css_max = 0.0  # G96's greatest speed (rpm), 0 under G97
+        self.sync_per_rev = 0.0  # a synchronised move's distance a revolution (program units)
+        self.orient = (0.0, 0)  # M19's angle and direction, written with its wait
 
     # -- writing ------------------------------------------------------------------------------
     def write(self, text: str, line: int = 0) -> None:
@@ -135,7 +139,8 @@ class Flattener:
         self.lines += 1
 
     def header(self, name: str) -> None:
-        self.write(f"(flattened by ngc from {_comment_text(name)} for {self.target.name})")
+        self.write(f"(flattened by ngc from {_comment_text(name)} for {self.target.name}, "
+                   f"curves within {self.tolerance:g} mm)")
         self.write(f"{'G20' if self.inch else 'G21'} {self.target.header}")
         self._system_words(self.system, 0)
 
@@ -226,7 +231,13 @@ class Flattener:
         elif kind == PROBE:
             raise Refused(line, "probing: where the probe stops is known only at the machine")
         else:
-            raise Refused(line, "spindle-synchronised motion (G33, G76) is not flattened yet")
+            if not self.target.sync:
+                raise Refused(line, "spindle-synchronised motion (G33, G76): "
+                              f"{self.target.name} has none")
+            q = self._coordinates(end, line)
+            axes = self._axes(q) or self._axes(q, force=True)
+            self.write(f"G33 {axes} K{self._per_rev()}", line)
+            return
         q = self._coordinates(end, line)
         axes = self._axes(q) or self._axes(q, force=True)  # (a move of no length still goes in)
         self.write(code + " " + axes, line)
@@ -329,7 +340,18 @@ class Flattener:
             self.straight(FEED, start, point, line)
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
-        raise Refused(line, "rigid tapping (G33.1) is not flattened yet")
+        """G33.1 to the bottom and back: the position after it is the start again."""
+        if not self.target.sync:
+            raise Refused(line, f"rigid tapping (G33.1): {self.target.name} has none")
+        s = list(self.where), list(self.raw)
+        q = self._coordinates(bottom, line)
+        axes = self._axes(q) or self._axes(q, force=True)
+        self.write(f"G33.1 {axes} K{self._per_rev()}", line)
+        self.where, self.raw = s
+
+    def _per_rev(self) -> str:
+        """The synchronised motion's distance a revolution, in the output's units."""
+        return self._number(self.sync_per_rev * self._program_mm() / self.scale)
 
     def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
         raise Refused(line, "engine-dialect programs are not flattened yet")
@@ -363,7 +385,10 @@ class Flattener:
                 self.write(f"G64 P{self._number(tolerance)} Q{self._number(naive)}", line)
         elif kind is ops.SetSpindleSpeed:
             self.rpm = op.rpm  # type: ignore[attr-defined]
-            self.write(f"S{self._number(self.rpm)}", line)
+            if self.css_max > 0.0:  # (G96: S is a surface speed, m or ft a minute)
+                self._surface_speed(line)
+            else:
+                self.write(f"S{self._number(self.rpm)}", line)
         elif kind is ops.StartSpindleClockwise:
             self.spindle_on = "M3"
             self.write("M3", line)
@@ -376,10 +401,26 @@ class Flattener:
             self.spindle_on = ""
         elif kind is ops.SetSpindleMode:
             css = op.css_max  # type: ignore[attr-defined]
-            if css > 0.0 or not self.target.css:
-                if css <= 0.0:
-                    return  # (G97: the only mode there is)
-                raise Refused(line, "constant surface speed (G96) is not flattened yet")
+            if css > 0.0 and not self.target.css:
+                raise Refused(line, f"constant surface speed (G96): {self.target.name} has none")
+            if css <= 0.0 and self.css_max > 0.0:
+                self.write("G97", line)
+            self.css_max = css
+        elif kind is ops.StartSpeedFeedSync:
+            self.sync_per_rev = op.per_rev  # type: ignore[attr-defined]
+        elif kind is ops.StopSpeedFeedSynch:
+            self.sync_per_rev = 0.0
+        elif kind is ops.OrientSpindle:
+            direction = op.direction  # type: ignore[attr-defined]
+            if not self.target.orient or direction not in (0, 1, 2):
+                raise Refused(line, "spindle orientation (M19)"
+                              + (f": {self.target.name} has none" if not self.target.orient
+                                 else f" of direction {direction}: not written yet"))
+            self.orient = (op.degrees, direction)  # type: ignore[attr-defined]
+        elif kind is ops.WaitOrientComplete:
+            degrees, direction = self.orient
+            self.write(f"M19 R{self._number(degrees)} Q{self._number(op.seconds)} "  # type: ignore[attr-defined]
+                       f"P{direction}", line)
         elif kind is ops.SelectTool:
             self.selected = op.tool  # type: ignore[attr-defined]
         elif kind is ops.ChangeTool:
@@ -462,6 +503,17 @@ class Flattener:
             self.spindle_on = ""
         self.write(f"(tool change: put in tool {self.selected}{size}, then resume)", line)
         self.write("M0", line)
+
+    def _surface_speed(self, line: int) -> None:
+        """G96 D S: the surface speed in the output's units (m a minute in mm, ft in inches) about
+        X 0 of the coordinates written, which must be the program's."""
+        frame = self.toolpath.frame
+        if frame.g92[0] != 0.0 or frame.rotation != 0.0:
+            raise Refused(line, "constant surface speed (G96) under a G92, G52 or rotation: its "
+                          "centre would move")
+        metres = self.rpm * (0.3048 if frame.inch_program else 1.0)
+        speed = metres / (0.3048 if self.inch else 1.0)
+        self.write(f"G96 D{self._number(self.css_max)} S{self._number(speed)}", line)
 
     def _diameter(self) -> str:
         """``, diameter D`` for the selected tool in the table (in the output's units)."""
