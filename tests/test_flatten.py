@@ -75,11 +75,16 @@ def test_a_probe_is_refused_and_nothing_is_written(tmp_path: Path) -> None:
                            "known only at the machine\n")
 
 
-def test_a_target_not_written_yet_says_so(tmp_path: Path) -> None:
-    done = _ngc("flatten", "--target", "fluidnc", str(ROOT / "examples" / "pocket.ngc"))
-    assert done.returncode == 2
-    assert done.stderr == ("ngc flatten: --target fluidnc is not supported yet (written: "
-                           "linuxcnc, grbl)\n")
+def test_the_targets_are_the_rows_of_the_table(tmp_path: Path) -> None:
+    from ngc.cli import FLATTEN_TARGETS
+    from ngc.flatten import TARGETS
+
+    assert tuple(TARGETS) == FLATTEN_TARGETS
+    done = _ngc("flatten", "--target", "marlin", str(ROOT / "examples" / "pocket.ngc"))
+    assert done.returncode == 2 and "invalid choice: 'marlin'" in done.stderr
+    with pytest.raises(ValueError, match="unknown target 'marlin': choose one of linuxcnc, "
+                       "grbl, grblhal, fluidnc"):
+        _library_flatten("G0 X1\nM2\n", target="marlin")
 
 
 def test_source_lines_percent_and_inch(tmp_path: Path) -> None:

@@ -210,6 +210,7 @@ def _add_plot(sub: argparse._SubParsersAction[argparse.ArgumentParser],
 
 
 VIEW_NAMES = ("top", "front", "side", "iso", "lathe")
+FLATTEN_TARGETS = ("linuxcnc", "grbl", "grblhal", "fluidnc")  # (ngc.flatten.TARGETS, unloaded)
 
 
 def _add_flatten(sub: argparse._SubParsersAction[argparse.ArgumentParser],
@@ -226,9 +227,8 @@ def _add_flatten(sub: argparse._SubParsersAction[argparse.ArgumentParser],
     flat.add_argument("file", metavar="FILE", help="the program (- for standard input)")
     flat.add_argument("-o", "--output", metavar="OUT", default=None,
                       help="write the program to OUT (default, or -: standard output)")
-    flat.add_argument("--target", default="linuxcnc",
-                      choices=("linuxcnc", "grbl", "grblhal", "fluidnc"),
-                      help="the controller (written so far: linuxcnc, grbl)")
+    flat.add_argument("--target", default="linuxcnc", choices=FLATTEN_TARGETS,
+                      help="the controller (default linuxcnc)")
     flat.add_argument("--units", choices=("mm", "inch"), default="mm",
                       help="the units the program is written in (default mm)")
     flat.add_argument("--decimals", type=int, default=None,

@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent / "flatten"
-TARGETS = ("linuxcnc", "grbl")
+TARGETS = ("linuxcnc", "grbl", "grblhal", "fluidnc")
 INPUTS = ("-i", "machine.ini", "-t", "tools.tbl")
 
 

@@ -105,7 +105,7 @@ def flatten(source: str | Iterable[str], name: str,
     """The program ``source`` (its text, or its lines; named ``name``) written plain for
     ``target``, run by ``new_interpreter(sink)`` (the machine inputs:
     :func:`ngc.options.new_interpreter`); raises :class:`Refused` for a program that cannot be
-    written truthfully, :class:`ValueError` for a target not written yet, and
+    written truthfully, :class:`ValueError` for an unknown target, and
     :class:`~ngc.errors.NgcError` for a program error.
 
     Curves the target cannot run as they are become lines within ``tolerance`` mm;
@@ -116,9 +116,8 @@ def flatten(source: str | Iterable[str], name: str,
     :mod:`.channel`); ``reader`` is the program file's reader when ``source`` reads from one
     (see :meth:`Interpreter.run`)."""
     row = TARGETS.get(target)
-    if row is None or not row.written:
-        known = ", ".join(t for t, r in TARGETS.items() if r.written)
-        raise ValueError(f"--target {target} is not supported yet (written: {known})")
+    if row is None:
+        raise ValueError(f"unknown target {target!r}: choose one of {', '.join(TARGETS)}")
     tee = Tee()
     toolpath = Toolpath(tee)
     original = Moves(toolpath, tolerance * FINE)

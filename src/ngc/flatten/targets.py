@@ -1,7 +1,7 @@
 """The controllers ``ngc flatten`` writes for, each a table of what it accepts: a new controller
 is a row, not a branch.
 
-``linuxcnc`` and ``grbl`` are written; the others are named so that asking for them says so.
+Each row says where its facts come from.
 """
 
 from __future__ import annotations
@@ -24,7 +24,6 @@ class Target(NamedTuple):
     decimals_mm: int
     decimals_inch: int
     max_line: int  # significant characters of a line, spaces and comments left out (0: no limit)
-    written: bool  # ngc flatten writes for it now
     systems: int = 9  # work offsets G54 .. (6: to G59; G59.1-G59.3 refused)
     css: bool = True  # G96 / G97
     header: str = "G90 G91.1 G94 G40 G49 G80 G17 G97"  # the modes set at the start
@@ -37,15 +36,24 @@ class Target(NamedTuple):
 
 TARGETS = MappingProxyType({
     "linuxcnc": Target("linuxcnc", frozenset({"G17", "G18", "G19"}), True, True, "G43 H", True,
-                       True, True, 4, 5, 0, True),
+                       True, True, 4, 5, 0),
     # Grbl 1.1 (commands.md): no M6 (a tool change is a pause), G43.1 for a tool length (Z
     # only), no G61/G64, no G95, G54-G59 only, no G96/G97, 79 characters (error:11)
     "grbl": Target("grbl", frozenset({"G17", "G18", "G19"}), True, False, "G43.1", False, False,
-                   False, 3, 4, 79, True, systems=6, css=False,
+                   False, 3, 4, 79, systems=6, css=False,
                    header="G90 G91.1 G94 G40 G49 G80 G17", percent=False, io=False,
                    mist=False, sync=False, orient=False),
-    "grblhal": Target("grblhal", frozenset({"G17", "G18", "G19"}), True, False, "none", False,
-                      True, False, 3, 4, 255, False),
-    "fluidnc": Target("fluidnc", frozenset({"G17", "G18", "G19"}), True, False, "none", False,
-                      False, False, 3, 4, 255, False),
+    # grblHAL (its core README's list of G-codes, leaving out what it marks as depending on the
+    # driver or configuration: M6, G43, G95-G97, G33, G76, the outputs): Grbl's, with G59.1-G59.3,
+    # M7, and arcs of several turns (P) from build 20220718
+    "grblhal": Target("grblhal", frozenset({"G17", "G18", "G19"}), True, True, "G43.1", False,
+                      False, False, 3, 4, 79, systems=9, css=False,
+                      header="G90 G91.1 G94 G40 G49 G80 G17", percent=False, io=False,
+                      mist=True, sync=False, orient=False),
+    # FluidNC: written to Grbl 1.1's documented commands, which it takes as Grbl does (what it
+    # adds depends on the machine's configuration)
+    "fluidnc": Target("fluidnc", frozenset({"G17", "G18", "G19"}), True, False, "G43.1", False,
+                      False, False, 3, 4, 79, systems=6, css=False,
+                      header="G90 G91.1 G94 G40 G49 G80 G17", percent=False, io=False,
+                      mist=False, sync=False, orient=False),
 })
