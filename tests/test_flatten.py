@@ -305,3 +305,12 @@ def test_golden_linuxcnc_outputs_run_in_rs274(tmp_path: Path, program: Path) -> 
     errors = [line for line in done.stderr.splitlines() if line.strip() not in ("", "executing")]
     assert done.returncode == 0 and not errors, done.stderr
     assert "PROGRAM_END" in done.stdout
+
+
+def test_grbl_numbers_keep_to_its_eight_digits() -> None:
+    result = _library_flatten("G21\nG1 X123456.789 Y-12345.6789 Z0.0004 F100\nM2\n",
+                              target="grbl", tolerance=0.01)
+    assert "G1 F100 X123456.79 Y-12345.679 Z0\n" in result.text  # type: ignore[attr-defined]
+    assert not re.search(r"\d[eE][-+]?\d", result.text)  # type: ignore[attr-defined]
+    linuxcnc = _library_flatten("G21\nG1 X123456.789 F100\nM2\n")
+    assert "X123456.789" in linuxcnc.text  # type: ignore[attr-defined]

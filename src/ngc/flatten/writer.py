@@ -116,6 +116,7 @@ class Flattener:
         self.shift: tuple[float, ...] = tuple(origins[system - 1])  # (+ the kept tool length)
         self.inverse = 1.0 / self.scale
         self.format = f"%.{self.decimals}f"
+        self.big = 10.0 ** (target.digits - self.decimals) if target.digits else 0.0
         self.lines = 0
         self.plane = "G17"
         self.ended = False  # M2 or M30 written
@@ -145,6 +146,11 @@ class Flattener:
         self._system_words(self.system, 0)
 
     def _number(self, v: float) -> str:
+        if (v >= self.big or v <= -self.big) and self.big:  # (fewer decimals: the target's
+            whole = len(str(int(abs(v))))  # reader keeps only so many digits)
+            text = f"{v:.{max(self.target.digits - whole, 0)}f}"
+            text = text.rstrip("0").rstrip(".") if "." in text else text
+            return "0" if text == "-0" else text
         text = (self.format % v).rstrip("0")
         if text[-1] == ".":
             text = text[:-1]
