@@ -1,5 +1,5 @@
 (flattened by ngc from comp-inside.ngc for fluidnc, curves within 0.002 mm)
-G21 G90 G91.1 G94 G40 G49 G80 G17
+G21 G90 G91.1 G94 G40 G49 G17
 G54
 (cutter compensation inside a pocket outline, with G42 and a G41.1 diameter)
 G0 X20 Y20 Z5

@@ -1,5 +1,5 @@
 (flattened by ngc from comp-outside.ngc for grblhal, curves within 0.002 mm)
-G21 G90 G91.1 G94 G40 G49 G80 G17
+G21 G90 G91.1 G94 G40 G49 G17
 G54
 (cutter compensation outside a square with a round corner: tool 1, 6 mm)
 G0 X-10 Y-10 Z5

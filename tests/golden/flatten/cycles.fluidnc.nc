@@ -1,5 +1,5 @@
 (flattened by ngc from cycles.ngc for fluidnc, curves within 0.002 mm)
-G21 G90 G91.1 G94 G40 G49 G80 G17
+G21 G90 G91.1 G94 G40 G49 G17
 G54
 (drilling cycles, each at two holes: G81 G82 G83 G73 G85 G86 G88 G89, G98 and G99)
 G0 X0 Y0 Z10

@@ -1,5 +1,5 @@
 (flattened by ngc from lathe-cycles.ngc for fluidnc, curves within 0.002 mm)
-G21 G90 G91.1 G94 G40 G49 G80 G17
+G21 G90 G91.1 G94 G40 G49 G17
 G54
 (a lathe's roughing and finishing cycles, G71 and G70, on a diameter program)
 G0 X20 Y0 Z5

@@ -1,5 +1,5 @@
 (flattened by ngc from offsets.ngc for grbl, curves within 0.002 mm)
-G21 G90 G91.1 G94 G40 G49 G80 G17
+G21 G90 G91.1 G94 G40 G49 G17
 G54
 (G52 and G92 offsets set by the program, in a work offset the operator set)
 G56

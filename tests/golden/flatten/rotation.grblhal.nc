@@ -1,5 +1,5 @@
 (flattened by ngc from rotation.ngc for grblhal, curves within 0.002 mm)
-G21 G90 G91.1 G94 G40 G49 G80 G17
+G21 G90 G91.1 G94 G40 G49 G17
 G54
 (a work offset the program rotates, arcs in XY and an arc in XZ turned off the axes)
 G55

@@ -1,5 +1,5 @@
 (flattened by ngc from splines.ngc for fluidnc, curves within 0.002 mm)
-G21 G90 G91.1 G94 G40 G49 G80 G17
+G21 G90 G91.1 G94 G40 G49 G17
 G54
 (a cubic spline G5, a quadratic G5.1 and a NURBS G5.2 block)
 G0 X0 Y0 Z1

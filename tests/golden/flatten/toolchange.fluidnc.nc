@@ -1,5 +1,5 @@
 (flattened by ngc from toolchange.ngc for fluidnc, curves within 0.002 mm)
-G21 G90 G91.1 G94 G40 G49 G80 G17
+G21 G90 G91.1 G94 G40 G49 G17
 G54
 (two tools from the table with their lengths, a coolant and a dwell)
 G0 X0 Y0 Z50

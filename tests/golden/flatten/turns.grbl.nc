@@ -1,5 +1,5 @@
 (flattened by ngc from turns.ngc for grbl, curves within 0.002 mm)
-G21 G90 G91.1 G94 G40 G49 G80 G17
+G21 G90 G91.1 G94 G40 G49 G17
 G54
 (a helix of three turns with P, and a full circle)
 G0 X10 Y0 Z1

@@ -1,5 +1,5 @@
 (flattened by ngc from units.ngc for grbl, curves within 0.002 mm)
-G21 G90 G91.1 G94 G40 G49 G80 G17
+G21 G90 G91.1 G94 G40 G49 G17
 G54
 (a program in inches that switches to millimetres and back)
 G0 X0 Y0 Z5.08
