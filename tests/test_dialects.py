@@ -366,11 +366,13 @@ def test_rs274_engine_bytes_written_back(work: Path) -> None:
 
 
 # -- errors ----------------------------------------------------------------------------------------
-@pytest.mark.parametrize("command", ["canon", "check"])
-def test_bad_dialect_choice(capsys: pytest.CaptureFixture[str], work: Path, command: str) -> None:
+@pytest.mark.parametrize(("command", "choices"), [("canon", "'linuxcnc', 'engine'"),
+                                                 ("check", "'linuxcnc', 'engine', 'grbl'")])
+def test_bad_dialect_choice(capsys: pytest.CaptureFixture[str], work: Path, command: str,
+                            choices: str) -> None:
     code, out, err = run(capsys, command, "--dialect", "fanuc", "l.ngc")
     assert (code, out) == (2, "")
-    assert "argument --dialect: invalid choice: 'fanuc' (choose from 'linuxcnc', 'engine')" in err
+    assert f"argument --dialect: invalid choice: 'fanuc' (choose from {choices})" in err
 
 
 def test_rs274_bad_dialect_choice(capsys: pytest.CaptureFixture[str], work: Path) -> None:
@@ -437,9 +439,9 @@ def test_check_setup_read_before_any_file(capsys: pytest.CaptureFixture[str],
 
 
 def test_help_names_the_options(capsys: pytest.CaptureFixture[str]) -> None:
-    for command in ("canon", "check"):
+    for command, choices in (("canon", "{linuxcnc,engine}"), ("check", "{linuxcnc,engine,grbl}")):
         code, out, _ = run(capsys, command, "--help")
-        assert code == 0 and "--dialect {linuxcnc,engine}" in out and "--setup FILE" in out
+        assert code == 0 and f"--dialect {choices}" in out and "--setup FILE" in out
     code, out, _ = run(capsys, "rs274", "--help")
     assert code == 0 and "--dialect linuxcnc|engine" in out and "--setup FILE" in out
 

@@ -152,10 +152,13 @@ def build_parser() -> argparse.ArgumentParser:
         help="text: rs274's transcript format (default); json: JSON lines",
     )
     check = sub.add_parser(
-        "check", parents=machine, help="validate programs and summarize their motion",
+        "check", parents=[_machine_options(), _dialect_options(dialects.CHECK_DIALECTS)],
+        help="validate programs and summarize their motion",
         description="Run programs through the interpreter, writing nothing to disk: per file, "
         "the first error (on stderr) and a summary of the motion (on stdout). Each file is in "
-        "the dialect --dialect gives, else in the one its first line names.",
+        "the dialect --dialect gives, else in the one its first line names. With --dialect "
+        "grbl: every line Grbl 1.1 would reject, as its check mode ($C) answers it "
+        "(file:line: error:N message (line), on stderr), and a summary line per file.",
         epilog=PROGRAM_HELP,
     )
     check.add_argument("files", metavar="FILE", nargs="+", help="programs (- for standard input)")
@@ -358,15 +361,18 @@ def _machine_options() -> argparse.ArgumentParser:
     return parent
 
 
-def _dialect_options() -> argparse.ArgumentParser:
-    """The dialect and the engine dialect's machine input (see :mod:`ngc.dialects`)."""
+def _dialect_options(choices: tuple[str, ...] = dialects.DIALECTS) -> argparse.ArgumentParser:
+    """The dialect and the engine dialect's machine input (see :mod:`ngc.dialects`); ``choices``:
+    the dialects the command takes (``ngc check`` also takes grbl)."""
     parent = argparse.ArgumentParser(add_help=False)
     group = parent.add_argument_group("dialect")
-    group.add_argument("--dialect", choices=dialects.DIALECTS, default=None,
+    grbl = (", or grbl (each line held against what Grbl 1.1 accepts: docs/grbl.md)"
+            if dialects.GRBL in choices else "")
+    group.add_argument("--dialect", choices=choices, default=None,
                        help="the program's dialect: linuxcnc (LinuxCNC's rs274, the default) or "
-                       "engine (seed 003's codes by name and engine segments); without it, a "
-                       "program whose first line is '(dialect: engine)' or '; dialect: engine' "
-                       "is in the engine dialect (ngc check: per file)")
+                       f"engine (seed 003's codes by name and engine segments){grbl}; without "
+                       "it, a program whose first line is '(dialect: engine)' or '; dialect: "
+                       "engine' is in the engine dialect (ngc check: per file)")
     group.add_argument("--setup", metavar="FILE", dest="setup_file",
                        help="the engine dialect's machine setup sheet (TOML: fixtures, tool "
                        "lengths, the selected tool, maximum speeds); the LinuxCNC dialect's "

@@ -10,6 +10,9 @@ ngc reads two dialects: ``linuxcnc`` (rs274's, the default) and ``engine`` (``sp
    both are comments in either dialect, so the marked program runs unchanged;
 3. otherwise, the LinuxCNC dialect.
 
+``ngc check`` also takes ``--dialect grbl``: each line held against what Grbl 1.1 accepts
+(:mod:`ngc.grbl`), nothing run.  It is a dialect of that command only, and only when given.
+
 The engine dialect has its own machine input, the setup sheet (:func:`ngc.engine.read_setup`,
 ``--setup FILE``); the LinuxCNC inputs (INI file, tool table, parameter file, probe) are the
 other dialect's.  This module loads :mod:`ngc.engine` only when a program needs it, so that
@@ -35,6 +38,8 @@ if TYPE_CHECKING:
 LINUXCNC = "linuxcnc"
 ENGINE = "engine"
 DIALECTS = (LINUXCNC, ENGINE)
+GRBL = "grbl"  # ngc check's only: the controller's acceptance of each line (ngc.grbl.DIALECTS)
+CHECK_DIALECTS = (*DIALECTS, GRBL)
 
 _MARK = re.compile(r"\s*(?:\(\s*dialect\s*:\s*(\w+)\s*\)|;\s*dialect\s*:\s*(\w+))\s*",
                    re.IGNORECASE)
