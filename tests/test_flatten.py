@@ -3,6 +3,7 @@ compared with the original's; refusals say the line and the reason and write not
 
 from __future__ import annotations
 
+import io
 import itertools
 import math
 import re
@@ -211,7 +212,18 @@ def test_grbl_refuses_what_grbl_lacks(tmp_path: Path) -> None:
         "G21\nG1 X-123456.789 Y-123456.789 Z-123456.789 A-123456.789 B-123456.789 "
         "C-123456.789 F12345.678\nM2\n")
     done = _ngc("flatten", "--target", "grbl", "c.ngc", cwd=tmp_path)
-    assert done.returncode == 1 and "a line of more than 79 characters for grbl" in done.stderr
+    assert done.returncode == 1 and "c.ngc:2: ngc flatten: refused: a move of the A axis: grbl " \
+        "has X Y Z only" in done.stderr
+    from ngc.flatten.targets import TARGETS, Target
+    from ngc.flatten.writer import Flattener, Refused
+
+    short = TARGETS["grbl"]._replace(max_line=16)
+    assert isinstance(short, Target)
+    writer = Flattener(None, io.StringIO(), short, origins=[[0.0] * 6] * 9, system=1,  # type: ignore[arg-type]
+                       tool=lambda n: None)
+    writer.write("G1 X1.234 Y5.678 (a comment is not counted)")
+    with pytest.raises(Refused, match="a line of more than 16 characters for grbl"):
+        writer.write("G1 X1.234 Y5.678 Z9.123", 7)
 
 
 def test_outputs_m30_and_feed_per_revolution(tmp_path: Path) -> None:
@@ -314,3 +326,15 @@ def test_grbl_numbers_keep_to_its_eight_digits() -> None:
     assert not re.search(r"\d[eE][-+]?\d", result.text)  # type: ignore[attr-defined]
     linuxcnc = _library_flatten("G21\nG1 X123456.789 F100\nM2\n")
     assert "X123456.789" in linuxcnc.text  # type: ignore[attr-defined]
+
+
+@pytest.mark.parametrize(("program", "target"), [(p, t) for p, t in GOLDEN
+                                                 if t in ("grbl", "fluidnc")],
+                         ids=[f"{p.stem}-{t}" for p, t in GOLDEN if t in ("grbl", "fluidnc")])
+def test_golden_grbl_outputs_pass_grbls_check(program: Path, target: str) -> None:
+    from ngc.grbl import check_text
+
+    written, _refused = flatten_regen.golden(program, target)
+    if not written.exists():
+        pytest.skip("refused")
+    assert check_text(written.read_text()) == []

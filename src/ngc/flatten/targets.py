@@ -9,7 +9,6 @@ from __future__ import annotations
 from types import MappingProxyType
 from typing import NamedTuple
 
-
 # Grbl's modes at the start: no G80, under which Grbl rejects any axis word, G43.1's Z too
 # (gcode.c: "Even non-modal commands or TLO that use axis words will throw this strict error")
 GRBL_HEADER = "G90 G91.1 G94 G40 G49 G17"
@@ -38,6 +37,7 @@ class Target(NamedTuple):
     sync: bool = True  # G33 and G33.1, spindle-synchronised motion (G76 is written as G33)
     orient: bool = True  # M19
     digits: int = 0  # significant digits a number may have (Grbl's reader keeps 8; 0: any)
+    rotary: bool = True  # A B C axes (Grbl's default build has X Y Z only)
 
 
 TARGETS = MappingProxyType({
@@ -48,18 +48,21 @@ TARGETS = MappingProxyType({
     "grbl": Target("grbl", frozenset({"G17", "G18", "G19"}), True, False, "G43.1", False, False,
                    False, 3, 4, 79, systems=6, css=False,
                    header=GRBL_HEADER, percent=False, io=False,
-                   mist=False, sync=False, orient=False, digits=8),
+                   mist=False, sync=False, orient=False, digits=8,
+                   rotary=False),
     # grblHAL (its core README's list of G-codes, leaving out what it marks as depending on the
     # driver or configuration: M6, G43, G95-G97, G33, G76, the outputs): Grbl's, with G59.1-G59.3,
     # M7, and arcs of several turns (P) from build 20220718
     "grblhal": Target("grblhal", frozenset({"G17", "G18", "G19"}), True, True, "G43.1", False,
                       False, False, 3, 4, 79, systems=9, css=False,
                       header=GRBL_HEADER, percent=False, io=False,
-                      mist=True, sync=False, orient=False, digits=8),
+                      mist=True, sync=False, orient=False, digits=8,
+                   rotary=False),
     # FluidNC: written to Grbl 1.1's documented commands, which it takes as Grbl does (what it
     # adds depends on the machine's configuration)
     "fluidnc": Target("fluidnc", frozenset({"G17", "G18", "G19"}), True, False, "G43.1", False,
                       False, False, 3, 4, 79, systems=6, css=False,
                       header=GRBL_HEADER, percent=False, io=False,
-                      mist=False, sync=False, orient=False, digits=8),
+                      mist=False, sync=False, orient=False, digits=8,
+                   rotary=False),
 })

@@ -118,6 +118,7 @@ class Flattener:
         self.format = f"%.{self.decimals}f"
         self.big = 10.0 ** (target.digits - self.decimals) if target.digits else 0.0
         self.lines = 0
+        self.line = 0  # the program's line of the move being written
         self.plane = "G17"
         self.ended = False  # M2 or M30 written
         self.shuttle = False  # a pallet shuttle waits for what comes with it (M30, M60)
@@ -198,6 +199,9 @@ class Flattener:
                 if text == was or (was is None and text == "0"):
                     where[i] = text
                     continue
+                if not self.target.rotary:
+                    raise Refused(self.line, f"a move of the {AXES[i]} axis: "
+                                  f"{self.target.name} has X Y Z only")
                 words.append(AXES[i] + text)
                 where[i] = text
         return " ".join(words)
@@ -227,6 +231,7 @@ class Flattener:
 
     # -- the toolpath's consumer protocol -----------------------------------------------------
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
+        self.line = line
         if kind == FEED:
             code = "G1"
             feed = self._feed_words(line)
@@ -249,6 +254,7 @@ class Flattener:
         self.write(code + " " + axes, line)
 
     def arc(self, arc: ArcMove, line: int) -> None:
+        self.line = line
         n = arc.normal
         code, sign = _PLANES.get(n), 1  # (exactly on an axis, most arcs: or else)
         if code is None:
