@@ -132,7 +132,7 @@ class Flattener:
     # -- writing ------------------------------------------------------------------------------
     def write(self, text: str, line: int = 0) -> None:
         limit = self.target.max_line
-        if limit and len(_significant(text)) > limit:
+        if limit and len(text) > limit and len(_significant(text)) > limit:
             raise Refused(line, f"a line of more than {limit} characters for {self.target.name}: "
                           f"{text}")
         if self.source_lines and line:
