@@ -234,7 +234,8 @@ def test_outputs_m30_and_feed_per_revolution(tmp_path: Path) -> None:
     body = [line.strip() for line in _code(done.stdout).splitlines()]
     assert {"M62 P1", "M65 P2", "M68 E0 Q3", "G1 G95 F0.2 X2 Y0 Z0", "M30"} <= set(body)
     done = _ngc("flatten", "--target", "grbl", "p.ngc", cwd=tmp_path)
-    assert done.returncode == 1 and "SetMotionOutputBit is not flattened yet" in done.stderr
+    assert done.returncode == 1 and "p.ngc:2: ngc flatten: refused: an output (M62): grbl has " \
+        "none" in done.stderr
     (tmp_path / "q.ngc").write_text("G21\nS500 M3\nG95 G1 X2 F0.2\nM30\n")
     done = _ngc("flatten", "--target", "grbl", "q.ngc", cwd=tmp_path)
     assert done.returncode == 0, done.stderr

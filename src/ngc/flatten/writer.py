@@ -485,8 +485,10 @@ class Flattener:
             self.ended = True
         elif kind is ops.PalletShuttle:
             self.shuttle = True
-        elif kind in _OUTPUTS and self.target.io:
+        elif kind in _OUTPUTS:
             code, field = _OUTPUTS[kind]
+            if not self.target.io:
+                raise Refused(line, f"an output ({code}): {self.target.name} has none")
             if field == "bit":
                 self.write(f"{code} P{op.bit}", line)  # type: ignore[attr-defined]
             else:
