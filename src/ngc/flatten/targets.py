@@ -38,6 +38,7 @@ class Target(NamedTuple):
     orient: bool = True  # M19
     digits: int = 0  # significant digits a number may have (Grbl's reader keeps 8; 0: any)
     rotary: bool = True  # A B C axes (Grbl's default build has X Y Z only)
+    spiral: bool = True  # an arc whose end is off its start's circle (LinuxCNC runs a spiral)
 
 
 TARGETS = MappingProxyType({
@@ -49,7 +50,7 @@ TARGETS = MappingProxyType({
                    False, 3, 4, 79, systems=6, css=False,
                    header=GRBL_HEADER, percent=False, io=False,
                    mist=False, sync=False, orient=False, digits=8,
-                   rotary=False),
+                   rotary=False, spiral=False),
     # grblHAL (its core README's list of G-codes, leaving out what it marks as depending on the
     # driver or configuration: M6, G43, G95-G97, G33, G76, the outputs): Grbl's, with G59.1-G59.3,
     # M7, and arcs of several turns (P) from build 20220718
@@ -57,12 +58,12 @@ TARGETS = MappingProxyType({
                       False, False, 3, 4, 79, systems=9, css=False,
                       header=GRBL_HEADER, percent=False, io=False,
                       mist=True, sync=False, orient=False, digits=8,
-                   rotary=False),
+                   rotary=False, spiral=False),
     # FluidNC: written to Grbl 1.1's documented commands, which it takes as Grbl does (what it
     # adds depends on the machine's configuration)
     "fluidnc": Target("fluidnc", frozenset({"G17", "G18", "G19"}), True, False, "G43.1", False,
                       False, False, 3, 4, 79, systems=6, css=False,
                       header=GRBL_HEADER, percent=False, io=False,
                       mist=False, sync=False, orient=False, digits=8,
-                   rotary=False),
+                   rotary=False, spiral=False),
 })

@@ -277,7 +277,7 @@ def _nearest(points: list[Pos], at: int, q: Pos, tolerance: float) -> int:
         d = math.dist(points[k][:3], q[:3])
         if d <= tolerance:
             inside = True
-            if d < best_d:
+            if d <= best_d:  # (the later of points alike: a curve that stands still)
                 best, best_d = k, d
         elif inside:
             break

@@ -116,6 +116,7 @@ class Flattener:
         self.shift: tuple[float, ...] = tuple(origins[system - 1])  # (+ the kept tool length)
         self.inverse = 1.0 / self.scale
         self.format = f"%.{self.decimals}f"
+        self.unit = 10.0 ** -self.decimals * self.scale  # (mm: a unit of the last decimal)
         self.big = 10.0 ** (target.digits - self.decimals) if target.digits else 0.0
         self.lines = 0
         self.line = 0  # the program's line of the move being written
@@ -267,14 +268,25 @@ class Flattener:
             for point in arc_points(arc, self.chord):
                 self.straight(FEED, arc.start, point, line)
             return
+        first, second = _OFFSETS[code]
+        i, j = first[1], second[1]
+        centre, a, b = arc.centre, arc.start, arc.end
+        r0 = math.hypot(a[i] - centre[i], a[j] - centre[j])
+        r1 = math.hypot(b[i] - centre[i], b[j] - centre[j])
+        if max(r0, r1) <= 0.5 * self.unit:  # (no radius the numbers can hold: along the axis)
+            self.straight(FEED, a, b, line)
+            return
+        spiral = abs(r1 - r0) > 1e-9 * max(1.0, r0)  # (LinuxCNC takes an end off the circle,
+        if spiral and not target.spiral:  # within its tolerance, and runs a spiral)
+            for point in arc_points(arc, self.chord):
+                self.straight(FEED, arc.start, point, line)
+            return
         turns = arc.turns * sign
         if (turns > 1 or turns < -1) and not target.turns:
             self._turns(arc, turns, line)
             return
-        first, second = _OFFSETS[code]
         was = (self.where[first[1]], self.where[second[1]])
         q = self._coordinates(arc.end, line)
-        centre = arc.centre
         c = self._coordinates((centre[0], centre[1], centre[2], 0.0, 0.0, 0.0), line)
         words = ("G3" if turns > 0 else "G2") if code == self.plane else (
             code + (" G3" if turns > 0 else " G2"))
@@ -283,14 +295,14 @@ class Flattener:
         if feed:
             words += " " + feed
         words += " " + self._axes(q, force=True) + " " + self._centre_words(
-            first, second, was, arc.start, c, line)
+            first, second, was, arc.start, c, line, spiral)
         if turns > 1 or turns < -1:
             words += f" P{abs(turns)}"
         self.write(words, line)
 
     def _centre_words(self, first: tuple[str, int], second: tuple[str, int],
                       was: tuple[str | None, str | None], start: Pos,
-                      c: Sequence[float], line: int) -> str:
+                      c: Sequence[float], line: int, spiral: bool) -> str:
         """The centre's offset words from the start as written.  Where the rounded numbers
         leave the radii to the written start and end more than a unit of the last decimal
         apart, the centre moves onto the perpendicular bisector of the two (the nearest such
@@ -306,11 +318,11 @@ class Flattener:
         end = self.where[i], self.where[j]
         cx, cy = c[i], c[j]
         a, b = self._number(cx - sx), self._number(cy - sy)
-        if end[0] is None or end[1] is None:
+        if end[0] is None or end[1] is None or spiral:  # (a spiral keeps its centre)
             return f"{first[0]}{a} {second[0]}{b}"
         ex, ey = float(end[0]), float(end[1])
         ox, oy = sx + float(a), sy + float(b)
-        unit = 10.0 ** -self.decimals
+        unit = self.unit / self.scale
         if abs(math.hypot(sx - ox, sy - oy) - math.hypot(ex - ox, ey - oy)) > unit:
             dx, dy = ex - sx, ey - sy
             length = math.hypot(dx, dy)
