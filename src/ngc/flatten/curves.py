@@ -6,12 +6,13 @@ the written lines against.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable
 from typing import NamedTuple
 
 from ..canon import ops
-from ..planner.geometry import cubic_biarcs, nurbs_polyline
+from ..planner.geometry import cubic_biarcs, nurbs_point
 from ..planner.moves import G5_PIECES
 from ..render import curves
 from ..toolpath.frame import Pos
@@ -55,13 +56,48 @@ def cubic_pieces(curve: ops.NurbsFeed, start: Pos, to_machine: ToMachine) -> lis
 
 
 def nurbs_points(curve: ops.NurbsFeed, start: Pos, to_machine: ToMachine,
-                 tolerance: float) -> list[Pos]:
+                 tolerance: float, pieces: int = 16) -> list[Pos]:
     """Points along a G5.1 / G5.2 curve, after its start and up to its end, the lines between
-    them within ``tolerance`` (program units) of it; machine coordinates at the start's Z A B
+    them within ``tolerance`` (program units) of it: each knot span cut in ``pieces``, each piece
+    halved while the curve at any eighth of it is farther from its chord (a weight pulls the
+    curve to a sharp turn that fewer looks can miss); machine coordinates at the start's Z A B
     C."""
-    out = []
-    for x, y in nurbs_polyline(curve.points, curve.weights, curve.knots, curve.order,
-                               tolerance):
+    points, weights, knots, order = curve.points, curve.weights, curve.knots, curve.order
+    out: list[Pos] = []
+    if len(points) < 2 or order < 2:
+        xy = [points[-1]] if points else []
+    else:
+        def at(u: float) -> tuple[float, float]:
+            return nurbs_point(points, weights, knots, order, u)
+
+        xy = []
+
+        def piece(u0: float, p0: tuple[float, float], u1: float, p1: tuple[float, float],
+                  depth: int) -> None:
+            dx, dy = p1[0] - p0[0], p1[1] - p0[1]
+            dd = dx * dx + dy * dy
+            mids = [(u0 + (u1 - u0) * k / 8, at(u0 + (u1 - u0) * k / 8)) for k in range(1, 8)]
+            off = 0.0
+            for _u, m in mids:  # (from the chord itself: a turn may overshoot its end)
+                wx, wy = m[0] - p0[0], m[1] - p0[1]
+                t = 0.0 if dd == 0.0 else min(1.0, max(0.0, (wx * dx + wy * dy) / dd))
+                off = max(off, math.hypot(wx - t * dx, wy - t * dy))
+            if depth < 20 and off > tolerance:
+                um, pm = mids[3]
+                piece(u0, p0, um, pm, depth + 1)
+                piece(um, pm, u1, p1, depth + 1)
+            else:
+                xy.append(p1)
+
+        spans = sorted(set(knots[order - 1:len(points) + 1]))
+        u0, p0 = spans[0], at(spans[0])
+        for a, b in itertools.pairwise(spans):
+            for k in range(1, pieces + 1):
+                u1 = a + (b - a) * k / pieces
+                p1 = tuple(points[-1]) if (k == pieces and b == spans[-1]) else at(u1)
+                piece(u0, p0, u1, p1, 0)  # type: ignore[arg-type]
+                u0, p0 = u1, p1  # type: ignore[assignment]
+    for x, y in xy:
         p = to_machine((x, y, 0.0, 0.0, 0.0, 0.0))
         out.append((p[0], p[1], start[2], start[3], start[4], start[5]))
     return out
@@ -72,6 +108,8 @@ def arc_points(arc: ArcMove | ArcShape, tolerance: float) -> list[Pos]:
     them within ``tolerance`` of it (the chord's sagitta); A B C move with it in proportion."""
     f = curves.frame(arc.start, arc.end, arc.centre, arc.normal, arc.turns)
     r = max(f.r0, f.r1)
+    if 2.0 * r <= tolerance:  # (all of it within the tolerance of either end: one line)
+        return [arc.end]
     if r <= tolerance:
         step = math.pi / 2.0
     else:

@@ -84,7 +84,7 @@ class Moves:
                 a = end
             return
         points = curves.nurbs_points(curve, start, to_machine,
-                                     self.fine / self.toolpath.frame.scale)
+                                     self.fine / self.toolpath.frame.scale, pieces=64)
         self.moves.append((CURVE, points[-1] if points else start, None, 0, line, None,
                            [start, *points], self.feed))
 
@@ -256,6 +256,8 @@ def _follow(points: list[Pos], feed: float, b: list[Move], j: int,
             return j, worst, f"the feed {feed:.6g} became {b[j][7]:.6g}"
         q = b[j][1]
         k = _nearest(points, at, q, tolerance)
+        if k < last and all(math.dist(p[:3], q[:3]) <= tolerance for p in points[k:]):
+            k = last  # (the rest of the curve is within the tolerance of this end)
         gap = min(_to_segment(q, points[max(k - 1, 0)], points[k]),
                   _to_segment(q, points[k], points[min(k + 1, last)]))
         for p in points[at + 1:k]:  # (the curve's points the line passes; the nearest to

@@ -128,7 +128,7 @@ class Flattener:
         self.coolant = False
         self.css_max = 0.0  # G96's greatest speed (rpm), 0 under G97
         self.sync_per_rev = 0.0  # a synchronised move's distance a revolution (program units)
-        self.orient = (0.0, 0)  # M19's angle and direction, written with its wait
+        self.orient = ""  # M19 R P, written with its wait (Q) if one comes next
 
     # -- writing ------------------------------------------------------------------------------
     def write(self, text: str, line: int = 0) -> None:
@@ -233,6 +233,9 @@ class Flattener:
     # -- the toolpath's consumer protocol -----------------------------------------------------
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
         self.line = line
+        if self.orient:
+            self.write(self.orient, line)
+            self.orient = ""
         if kind == FEED:
             code = "G1"
             feed = self._feed_words(line)
@@ -256,6 +259,9 @@ class Flattener:
 
     def arc(self, arc: ArcMove, line: int) -> None:
         self.line = line
+        if self.orient:
+            self.write(self.orient, line)
+            self.orient = ""
         n = arc.normal
         code, sign = _PLANES.get(n), 1  # (exactly on an axis, most arcs: or else)
         if code is None:
@@ -276,8 +282,12 @@ class Flattener:
         if max(r0, r1) <= 0.5 * self.unit:  # (no radius the numbers can hold: along the axis)
             self.straight(FEED, a, b, line)
             return
-        spiral = abs(r1 - r0) > 1e-9 * max(1.0, r0)  # (LinuxCNC takes an end off the circle,
-        if spiral and not target.spiral:  # within its tolerance, and runs a spiral)
+        # An arc whose end is off its start's circle (LinuxCNC takes one within its tolerance,
+        # which depends on the units, and runs a spiral) is an arc for a target that runs it
+        # alike in the same units; an arc too small for its offsets to be written is lines.
+        spiral = abs(r1 - r0) > 1e-9 * max(1.0, r0)
+        if (min(r0, r1) < 2.0 * self.unit or (spiral and not (
+                target.spiral and self.toolpath.frame.inch_program == self.inch))):
             for point in arc_points(arc, self.chord):
                 self.straight(FEED, arc.start, point, line)
             return
@@ -359,7 +369,7 @@ class Flattener:
                     self.arc(ArcMove(a, end, centre, (0.0, 0.0, 1.0), turns, NO_ARC, a), line)
                 a = end
             return
-        chord = 0.5 * self.chord / self._program_mm()  # (the curve is measured halfway only)
+        chord = self.chord / self._program_mm()
         for point in nurbs_points(curve, start, to_machine, chord):
             self.straight(FEED, start, point, line)
 
@@ -382,6 +392,9 @@ class Flattener:
 
     def other(self, op: ops.Op, line: int) -> None:
         kind = type(op)
+        if self.orient and kind is not ops.WaitOrientComplete:
+            self.write(self.orient, line)
+            self.orient = ""
         if kind in RESOLVED:
             return
         if kind is ops.SetG5xOffset:
@@ -440,11 +453,14 @@ class Flattener:
                 raise Refused(line, "spindle orientation (M19)"
                               + (f": {self.target.name} has none" if not self.target.orient
                                  else f" of direction {direction}: not written yet"))
-            self.orient = (op.degrees, direction)  # type: ignore[attr-defined]
+            # (written with the wait that may come next: M19 R P Q is one line)
+            self.orient = f"M19 R{self._number(op.degrees)} P{direction}"  # type: ignore[attr-defined]
+            return
         elif kind is ops.WaitOrientComplete:
-            degrees, direction = self.orient
-            self.write(f"M19 R{self._number(degrees)} Q{self._number(op.seconds)} "  # type: ignore[attr-defined]
-                       f"P{direction}", line)
+            if not self.target.orient:
+                raise Refused(line, f"spindle orientation (M19): {self.target.name} has none")
+            self.write(f"{self.orient or 'M19'} Q{self._number(op.seconds)}", line)  # type: ignore[attr-defined]
+            self.orient = ""
         elif kind is ops.SelectTool:
             self.selected = op.tool  # type: ignore[attr-defined]
         elif kind is ops.ChangeTool:
