@@ -339,3 +339,14 @@ def test_golden_grbl_outputs_pass_grbls_check(program: Path, target: str) -> Non
     if not written.exists():
         pytest.skip("refused")
     assert check_text(written.read_text()) == []
+
+
+def test_a_tool_of_no_length_after_one_with_a_length(tmp_path: Path) -> None:
+    # G43 for a tool whose table entry has no offsets: G49, and the coordinates no longer
+    # take the first tool's length off
+    (tmp_path / "t.tbl").write_text("T1 P1 Z2.0 D0.25\nT2 P2 D0.5\n")
+    (tmp_path / "p.ngc").write_text("G20\nT1 M6 G43\nG0 X1 Z1\nT2 M6 G43\nG0 X1 Z1\nM2\n")
+    done = _ngc("flatten", "-t", "t.tbl", "p.ngc", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    body = [line for line in _code(done.stdout).splitlines() if line.strip()]
+    assert body[body.index("G49") + 1] == "G0 X25.4 Y0 Z25.4"

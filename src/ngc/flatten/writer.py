@@ -574,7 +574,8 @@ class Flattener:
         if not any(tlo):
             if self.kept is not None:
                 self.write("G49", line)
-            self.kept, self.kept_offset = None, (0.0,) * 6
+                self.kept, self.kept_offset = None, (0.0,) * 6
+                self._forget()
             return
         if self.target.tool_length in ("G43 H", "G43.1"):
             for number in (self.toolpath.tool, self.selected):
