@@ -268,17 +268,19 @@ def test_the_comparison_finds_a_moved_end_and_a_missing_move() -> None:
     from ngc.flatten.verify import compare
 
     zero = (0.0,) * 6
-    a = [("feed", (1.0, 0.0, 0.0, 0.0, 0.0, 0.0), None, 0, 3, None, None, 100.0),
-         ("rapid", (1.0, 2.0, 0.0, 0.0, 0.0, 0.0), None, 0, 4, None, None, 0.0)]
+    a = [("feed", (1.0, 0.0, 0.0, 0.0, 0.0, 0.0), None, 0, 3, None, None, 100.0, 1),
+         ("rapid", (1.0, 2.0, 0.0, 0.0, 0.0, 0.0), None, 0, 4, None, None, 0.0, 1)]
     same = compare(a, list(a), 0.002)  # type: ignore[arg-type]
     assert same.difference is None and same.deviation == 0.0 and same.moves == 2
-    moved = [a[0], ("rapid", (1.0, 2.01, 0.0, 0.0, 0.0, 0.0), None, 0, 9, None, None, 0.0)]
+    moved = [a[0], ("rapid", (1.0, 2.01, 0.0, 0.0, 0.0, 0.0), None, 0, 9, None, None, 0.0, 1)]
     assert abs(compare(a, moved, 0.002).deviation - 0.01) < 1e-12  # type: ignore[arg-type]
     missing = compare(a, a[:1], 0.002)  # type: ignore[arg-type]
-    assert missing.difference is not None and "1 more of the original's" in missing.difference
-    other = compare(a, [("rapid", zero, None, 0, 1, None, None, 0.0), a[1]], 0.002)  # type: ignore[arg-type]
+    assert missing.difference == "move 2 (line 4): the program written has no move for it"
+    extra = compare(a[:1], a, 0.002)  # type: ignore[arg-type]
+    assert extra.difference == "the program written has 1 moves more, after move 1"
+    other = compare(a, [("rapid", zero, None, 0, 1, None, None, 0.0, 1), a[1]], 0.002)  # type: ignore[arg-type]
     assert other.difference == "move 1 (line 3): a feed became a rapid"
-    slower = compare(a, [(*a[0][:7], 99.0), a[1]], 0.002)  # type: ignore[arg-type]
+    slower = compare(a, [(*a[0][:7], 99.0, 1), a[1]], 0.002)  # type: ignore[arg-type]
     assert slower.difference == "move 1 (line 3): the feed 100 became 99"
 
 

@@ -120,7 +120,8 @@ def flatten(source: str | Iterable[str], name: str,
         raise ValueError(f"unknown target {target!r}: choose one of {', '.join(TARGETS)}")
     tee = Tee()
     toolpath = Toolpath(tee)
-    original = Moves(toolpath, tolerance * FINE)
+    written: list[Flattener] = []  # (the writer, made below: how many moves it wrote for each)
+    original = Moves(toolpath, tolerance * FINE, counts=lambda: written[0].counts)
     buffer = _Buffer()
     interp = new_interpreter(toolpath)
     origins, system = _origins(interp, 0)
@@ -134,6 +135,7 @@ def flatten(source: str | Iterable[str], name: str,
     writer = Flattener(toolpath, buffer, row, origins=origins, system=system, tool=tool,
                        inch=inch, decimals=decimals, source_lines=source_lines,
                        tolerance=tolerance, toolchange=toolchange)
+    written.append(writer)
     kept: list[str] = []
     checker: list[channel.Checker] = []  # (started with the first chunk)
     first = [True]

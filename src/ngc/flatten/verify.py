@@ -37,10 +37,11 @@ class Verified(NamedTuple):
 # kind, end, an arc's centre, its turns, line, its axis (the normal, pointing so that the arc
 # turns counterclockwise about it: an arc about -X turning one way is the same arc as one about
 # +X turning the other), its shape (the arc, or the points of a curve) where a target may have
-# written it as lines, and its feed (machine units a minute, at the spindle speed for a feed per
-# revolution; 0 for a rapid)
+# written it as lines, its feed (machine units a minute, at the spindle speed for a feed per
+# revolution; 0 for a rapid), and the moves written for it (1 for the written program's own)
 Move = tuple[str, Pos, "tuple[float, ...] | None", int, int, "tuple[float, ...] | None",
-             "ArcShape | list[Pos] | None", float]
+             "ArcShape | list[Pos] | None", float, int]
+ONE = [1]
 CURVE = "curve"
 FINE = 0.02  # a curve's points for the verification: within this part of the tolerance
 FEED_TOLERANCE = 1e-3  # mm a minute, and as much a thousand: feeds the same but for rounding
@@ -48,11 +49,18 @@ FEED_TOLERANCE = 1e-3  # mm a minute, and as much a thousand: feeds the same but
 
 class Moves:
     """A reader of the toolpath keeping each move's kind, end, and an arc's centre and turns;
-    a G5 as its biarcs, a G5.1 / G5.2 curve as its points within ``fine`` mm."""
+    a G5 as its biarcs, a G5.1 / G5.2 curve as its points within ``fine`` mm.
 
-    def __init__(self, toolpath: Toolpath, fine: float) -> None:
+    ``counts``, read after each move, says how many moves were written for it (for each of a
+    G5's pieces): which of the written moves :func:`compare` holds against it.  The grouping
+    cannot hide a difference, since every written move is measured against the move it is
+    given to and the groups follow each other in order; a wrong one only fails."""
+
+    def __init__(self, toolpath: Toolpath, fine: float,
+                 counts: Callable[[], list[int]] | None = None) -> None:
         self.toolpath = toolpath
         self.fine = fine
+        self.counts = counts if counts is not None else (lambda: ONE)
         self.moves: list[Move] = []
         self.rate = 0.0  # the feed as canon set it, in machine units
         self.per_rev = False
@@ -62,37 +70,44 @@ class Moves:
 
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
         self.moves.append((kind, end, None, 0, line, None, None,
-                           0.0 if kind == RAPID else self.sync if kind == SYNC else self.feed))
+                           0.0 if kind == RAPID else self.sync if kind == SYNC else self.feed,
+                           self.counts()[0]))
 
     def arc(self, arc: ArcMove, line: int) -> None:
+        self._arc(arc, line, self.counts()[0])
+
+    def _arc(self, arc: ArcMove, line: int, count: int) -> None:
         sign = 1.0 if arc.turns > 0 else -1.0
         axis = tuple(sign * v for v in arc.normal)
         self.moves.append((ARC, arc.end, arc.centre, abs(arc.turns), line, axis,
                            ArcShape(arc.start, arc.end, arc.centre, arc.normal, arc.turns),
-                           self.feed))
+                           self.feed, count))
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
         to_machine = self.toolpath.frame.to_machine
+        counts = self.counts()
         if curves.is_cubic(curve):
             a = start
-            for end, centre, turns in curves.cubic_pieces(curve, start, to_machine):
+            pieces = curves.cubic_pieces(curve, start, to_machine)
+            for (end, centre, turns), count in zip(pieces, _padded(counts, len(pieces)),
+                                                   strict=True):
                 if centre is None:
-                    self.straight(FEED, a, end, line)
+                    self.moves.append((FEED, end, None, 0, line, None, None, self.feed, count))
                 else:
-                    self.arc(ArcMove(a, end, centre, (0.0, 0.0, 1.0), turns, curves.NO_ARC, a),
-                             line)
+                    self._arc(ArcMove(a, end, centre, (0.0, 0.0, 1.0), turns, curves.NO_ARC, a),
+                              line, count)
                 a = end
             return
         points = curves.nurbs_points(curve, start, to_machine,
                                      self.fine / self.toolpath.frame.scale, pieces=64)
         self.moves.append((CURVE, points[-1] if points else start, None, 0, line, None,
-                           [start, *points], self.feed))
+                           [start, *points], self.feed, counts[0]))
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
-        self.moves.append(("tap", bottom, None, 0, line, None, None, self.sync))
+        self.moves.append(("tap", bottom, None, 0, line, None, None, self.sync, 1))
 
     def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
-        self.moves.append(("bezier", start, None, 0, line, None, None, self.feed))
+        self.moves.append(("bezier", start, None, 0, line, None, None, self.feed, 1))
 
     def other(self, op: ops.Op, line: int) -> None:
         """The feed each move runs at."""
@@ -169,54 +184,54 @@ def check(chunks: Iterator[tuple[str, list[Move]]],
 
 
 def compare(a: list[Move], b: list[Move], tolerance: float, start: int = 0) -> Verified:
-    """The moves ``b`` against the moves ``a`` they should make: one to one, but for an arc of
-    several turns written one turn an arc, and a curve or an arc written as straight lines
-    (followed along its points).  Moves are counted in messages from ``start``."""
+    """The moves ``b`` against the moves ``a`` they should make, each of ``a`` against the next
+    as many of ``b`` as were written for it: one the same (an arc the same arc), an arc of
+    several turns as one arc a turn, or a curve or an arc as straight lines (followed along its
+    points).  Moves are counted in messages from ``start``."""
     worst = 0.0
-    i = j = 0
-    while i < len(a) and j < len(b):
-        m, n = a[i], b[j]
-        if m[0] == CURVE or (m[0] == ARC and n[0] == FEED):
+    j = 0
+    for i, m in enumerate(a):
+        count = m[8]
+        group = b[j:j + count]
+        where = f"move {start + i + 1} (line {m[4]})"
+        if len(group) < count or count == 0:
+            return Verified(i, worst, f"{where}: the program written has no move for it")
+        n = group[0]
+        if count == 1 and n[0] == m[0] and n[3] == m[3]:
+            pass
+        elif (m[0] == ARC and count == m[3] and all(r[0] == ARC and r[3] == 1 and r[5] == n[5]
+                                                     and _axis_gap(r, n) < 1e-6 for r in group)):
+            n = (ARC, group[-1][1], n[2], count, n[4], n[5], None, n[7], 1)
+        elif m[0] in (CURVE, ARC) and all(r[0] == FEED for r in group):
             shape = m[6]
             if isinstance(shape, ArcShape):
                 shape = [shape.start, *curves.arc_points(shape, tolerance * FINE)]
             assert shape is not None
-            j, deviation, difference = _follow(shape, m[7], b, j, tolerance)
+            deviation, difference = _follow(shape, m[7], group, tolerance)
             worst = max(worst, deviation)
             if difference is not None:
-                return Verified(i, worst, f"move {start + i + 1} (line {m[4]}): {difference}")
-            i += 1
+                return Verified(i, worst, f"{where}: {difference}")
+            j += count
             continue
-        k = m[3]
-        if m[0] == ARC and k > 1 and n[0] == ARC and n[3] == 1:
-            run = b[j:j + k]
-            if len(run) == k and all(r[0] == ARC and r[3] == 1 and r[5] == n[5]
-                                     and _axis_gap(r, n) < 1e-6 for r in run):
-                n = (ARC, run[-1][1], n[2], k, n[4], n[5], None, n[7])
-                j += k - 1
-        if m[0] != n[0] or m[3] != n[3]:
-            return Verified(i, worst, f"move {start + i + 1} (line {m[4]}): a {m[0]} became a "
-                            f"{n[0]}")
+        else:
+            return Verified(i, worst, f"{where}: a {m[0]} became a {n[0]}")
         if not _same_feed(m[7], n[7]):
-            return Verified(i, worst, f"move {start + i + 1} (line {m[4]}): the feed "
-                            f"{m[7]:.6g} became {n[7]:.6g}")
+            return Verified(i, worst, f"{where}: the feed {m[7]:.6g} became {n[7]:.6g}")
         worst = max(worst, math.dist(m[1][:3], n[1][:3]),
                     max(abs(x - y) for x, y in zip(m[1][3:], n[1][3:], strict=True)))
         if m[2] is not None and n[2] is not None and m[5] is not None and n[5] is not None:
             if math.dist(m[5], n[5]) > 1e-9:
-                return Verified(i, worst, f"move {start + i + 1} (line {m[4]}): the arc turns the "
-                                "other way")
+                return Verified(i, worst, f"{where}: the arc turns the other way")
             gap = _axis_gap(m, n)
             shapes = m[6], n[6]
             if (gap > 0.25 * tolerance and isinstance(shapes[0], ArcShape)
                     and isinstance(shapes[1], ArcShape)):
                 gap = min(gap, _arc_gap(shapes[0], shapes[1]))  # (a nearly straight arc)
             worst = max(worst, gap)
-        i += 1
-        j += 1
-    if i < len(a) or j < len(b):
-        return Verified(i, worst, f"the moves differ in number after move {start + i}: "
-                        f"{len(a) - i} more of the original's, {len(b) - j} more of the written")
+        j += count
+    if j < len(b):
+        return Verified(len(a), worst, f"the program written has {len(b) - j} moves more, "
+                        f"after move {start + len(a)}")
     return Verified(len(a), worst, None)
 
 
@@ -237,37 +252,38 @@ def _same_feed(f: float, g: float) -> bool:
     return abs(f - g) <= FEED_TOLERANCE * max(1.0, abs(f))
 
 
-def _follow(points: list[Pos], feed: float, b: list[Move], j: int,
-            tolerance: float) -> tuple[int, float, str | None]:
-    """Follow the curve through ``points`` (its start first) along the straight feeds of ``b``
-    from ``j``: each line's end is taken at the first point from the last end on that comes
-    within the tolerance (then the nearest in that run), and the curve's points between are
-    measured to the line.  The index after the last line, the largest distance, and what went
-    wrong if anything."""
+def _follow(points: list[Pos], feed: float, lines: list[Move],
+            tolerance: float) -> tuple[float, str | None]:
+    """Follow the curve through ``points`` (its start first) along the straight feeds
+    ``lines``: each line's end is taken at the first point from the last end on that comes
+    within the tolerance (then the nearest in that run), the last line's at the curve's end,
+    and the curve's points between are measured to the line.  The largest distance, and what
+    went wrong if anything."""
     last = len(points) - 1
     at = 0
     worst = 0.0
     previous = points[0]
-    while at < last:
-        if j >= len(b) or b[j][0] != FEED:
-            kind = "nothing" if j >= len(b) else f"a {b[j][0]}"
-            return j, worst, f"a curve became {kind} before its end"
-        if not _same_feed(feed, b[j][7]):
-            return j, worst, f"the feed {feed:.6g} became {b[j][7]:.6g}"
-        q = b[j][1]
-        k = _nearest(points, at, q, tolerance)
-        if k < last and all(math.dist(p[:3], q[:3]) <= tolerance for p in points[k:]):
-            k = last  # (the rest of the curve is within the tolerance of this end)
-        gap = min(_to_segment(q, points[max(k - 1, 0)], points[k]),
-                  _to_segment(q, points[k], points[min(k + 1, last)]))
+    for index, n in enumerate(lines):
+        if not _same_feed(feed, n[7]):
+            return worst, f"the feed {feed:.6g} became {n[7]:.6g}"
+        q = n[1]
+        if index == len(lines) - 1:
+            k = last
+            gap = math.dist(points[last][:3], q[:3])
+        else:
+            k = _nearest(points, at, q, tolerance)
+            gap = min(_to_segment(q, points[max(k - 1, 0)], points[k]),
+                      _to_segment(q, points[k], points[min(k + 1, last)]))
         for p in points[at + 1:k]:  # (the curve's points the line passes; the nearest to
             gap = max(gap, _to_segment(p, previous, q))  # its ends are measured as ends)
         worst = max(worst, gap)
-        j += 1
-        if k == at and gap > tolerance:
-            return j, worst, "a line leaves the curve"
         previous, at = q, k
-    return j, worst, None
+    return worst, None
+
+
+def _padded(counts: list[int], n: int) -> list[int]:
+    """``counts`` for ``n`` pieces (a missing count: one move)."""
+    return (counts + [1] * n)[:n]
 
 
 def _nearest(points: list[Pos], at: int, q: Pos, tolerance: float) -> int:

@@ -34,6 +34,7 @@ _PLANES = {(0.0, 0.0, 1.0): "G17", (0.0, 1.0, 0.0): "G18", (1.0, 0.0, 0.0): "G19
 _OFFSETS = {"G17": (("I", 0), ("J", 1)), "G18": (("I", 0), ("K", 2)),
             "G19": (("J", 1), ("K", 2))}
 TOOL_CHANGES = ("pause", "strip", "keep")
+_ONE = [1]  # (a straight move: one line)
 # Canon operations that change nothing the output must say: resolved into the coordinates or
 # said by the moves themselves.
 RESOLVED = frozenset({
@@ -120,6 +121,8 @@ class Flattener:
         self.big = 10.0 ** (target.digits - self.decimals) if target.digits else 0.0
         self.lines = 0
         self.line = 0  # the program's line of the move being written
+        self.motions = 0  # motion lines written
+        self.counts: list[int] = _ONE  # the motion lines of the last move (of each G5 piece)
         self.plane = "G17"
         self.ended = False  # M2 or M30 written
         self.shuttle = False  # a pallet shuttle waits for what comes with it (M30, M60)
@@ -252,12 +255,21 @@ class Flattener:
             q = self._coordinates(end, line)
             axes = self._axes(q) or self._axes(q, force=True)
             self.write(f"G33 {axes} K{self._per_rev()}", line)
+            self.motions += 1
+            self.counts = _ONE
             return
         q = self._coordinates(end, line)
         axes = self._axes(q) or self._axes(q, force=True)  # (a move of no length still goes in)
         self.write(code + " " + axes, line)
+        self.motions += 1
+        self.counts = _ONE
 
     def arc(self, arc: ArcMove, line: int) -> None:
+        before = self.motions
+        self._arc(arc, line)
+        self.counts = [self.motions - before]
+
+    def _arc(self, arc: ArcMove, line: int) -> None:
         self.line = line
         if self.orient:
             self.write(self.orient, line)
@@ -309,6 +321,7 @@ class Flattener:
         if turns > 1 or turns < -1:
             words += f" P{abs(turns)}"
         self.write(words, line)
+        self.motions += 1
 
     def _centre_words(self, first: tuple[str, int], second: tuple[str, int],
                       was: tuple[str | None, str | None], start: Pos,
@@ -355,23 +368,29 @@ class Flattener:
         for a, b in zip(starts, ends, strict=True):
             piece = ArcMove(a, b, arc.centre, arc.normal, 1 if arc.turns > 0 else -1,
                             arc.op, arc.prog_start)
-            self.arc(piece, line)
+            self._arc(piece, line)
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
         """G5 as the biarcs LinuxCNC runs it as; G5.1 and G5.2 as lines within the tolerance."""
         to_machine = self.toolpath.frame.to_machine
+        counts = []
         if is_cubic(curve):
             a = start
             for end, centre, turns in cubic_pieces(curve, start, to_machine):
+                before = self.motions
                 if centre is None:
                     self.straight(FEED, a, end, line)
                 else:
-                    self.arc(ArcMove(a, end, centre, (0.0, 0.0, 1.0), turns, NO_ARC, a), line)
+                    self._arc(ArcMove(a, end, centre, (0.0, 0.0, 1.0), turns, NO_ARC, a), line)
+                counts.append(self.motions - before)
                 a = end
-            return
-        chord = self.chord / self._program_mm()
-        for point in nurbs_points(curve, start, to_machine, chord):
-            self.straight(FEED, start, point, line)
+        else:
+            before = self.motions
+            chord = self.chord / self._program_mm()
+            for point in nurbs_points(curve, start, to_machine, chord):
+                self.straight(FEED, start, point, line)
+            counts.append(self.motions - before)
+        self.counts = counts
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
         """G33.1 to the bottom and back: the position after it is the start again."""
@@ -381,6 +400,8 @@ class Flattener:
         q = self._coordinates(bottom, line)
         axes = self._axes(q) or self._axes(q, force=True)
         self.write(f"G33.1 {axes} K{self._per_rev()}", line)
+        self.motions += 1
+        self.counts = _ONE
         self.where, self.raw = s
 
     def _per_rev(self) -> str:
