@@ -8,6 +8,7 @@ compares them chunk by chunk, so that neither path is ever held whole.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable, Iterator
 from typing import NamedTuple
@@ -255,11 +256,15 @@ def _same_feed(f: float, g: float) -> bool:
 def _follow(points: list[Pos], feed: float, lines: list[Move],
             tolerance: float) -> tuple[float, str | None]:
     """Follow the curve through ``points`` (its start first) along the straight feeds
-    ``lines``: each line's end is taken at the first point from the last end on that comes
-    within the tolerance (then the nearest in that run), the last line's at the curve's end,
-    and the curve's points between are measured to the line.  The largest distance, and what
-    went wrong if anything."""
+    ``lines``: each line's end is taken at the nearest of the curve's points from the last end
+    on, no farther along the curve than the line is long (and half as much again, and four
+    tolerances: a line stays within the tolerance of its piece of the curve), the last line's at
+    the curve's end; the curve's points between are measured to the line.  The largest
+    distance, and what went wrong if anything."""
     last = len(points) - 1
+    along = [0.0]
+    for p, q in itertools.pairwise(points):
+        along.append(along[-1] + math.dist(p[:3], q[:3]))
     at = 0
     worst = 0.0
     previous = points[0]
@@ -271,7 +276,14 @@ def _follow(points: list[Pos], feed: float, lines: list[Move],
             k = last
             gap = math.dist(points[last][:3], q[:3])
         else:
-            k = _nearest(points, at, q, tolerance)
+            reach = along[at] + 1.5 * math.dist(previous[:3], q[:3]) + 4.0 * tolerance
+            k, gap = at, math.inf
+            for h in range(at, last + 1):
+                if along[h] > reach:
+                    break
+                d = math.dist(points[h][:3], q[:3])
+                if d <= gap:
+                    k, gap = h, d
             gap = min(_to_segment(q, points[max(k - 1, 0)], points[k]),
                       _to_segment(q, points[k], points[min(k + 1, last)]))
         for p in points[at + 1:k]:  # (the curve's points the line passes; the nearest to
@@ -284,24 +296,6 @@ def _follow(points: list[Pos], feed: float, lines: list[Move],
 def _padded(counts: list[int], n: int) -> list[int]:
     """``counts`` for ``n`` pieces (a missing count: one move)."""
     return (counts + [1] * n)[:n]
-
-
-def _nearest(points: list[Pos], at: int, q: Pos, tolerance: float) -> int:
-    """The point from ``at`` on that ``q`` stands at: the first run of points within the
-    tolerance of it, its nearest; else the nearest of all."""
-    best, best_d = at, math.inf
-    inside = False
-    for k in range(at, len(points)):
-        d = math.dist(points[k][:3], q[:3])
-        if d <= tolerance:
-            inside = True
-            if d <= best_d:  # (the later of points alike: a curve that stands still)
-                best, best_d = k, d
-        elif inside:
-            break
-        elif d < best_d and not inside:
-            best, best_d = k, d
-    return best
 
 
 def _to_segment(p: Pos, a: Pos, b: Pos) -> float:
