@@ -412,7 +412,8 @@ class Compared(NamedTuple):
     distance of an end (mm, on one coordinate), the largest ratio of a distance to its bound,
     the arcs whose centre moved past its bound while their path stayed within it (and the
     largest such move, mm), the moves of no length left out of each, the arcs taken as whole
-    turns (their printed end a rounding off their start), and the first difference."""
+    turns (their printed end a rounding off their start), the largest distance of lines
+    written for a curve or an arc from it (mm), and the first difference."""
 
     moves: int
     worst: float
@@ -421,6 +422,7 @@ class Compared(NamedTuple):
     centre_worst: float
     idle: tuple[int, int]
     whole_turns: int
+    curve_worst: float
     difference: str | None
 
 
@@ -431,6 +433,7 @@ class _Tally:
     centres: int = 0
     centre_worst: float = 0.0
     whole_turns: int = 0
+    curve_worst: float = 0.0
 
 
 def _limits(a: canon_read.Bound, b: canon_read.Bound, w: Written) -> list[float]:
@@ -654,7 +657,7 @@ def _follow_move(m: Any, b: list[Any], j: int, span: float, angle: float,
     for k, points in enumerate(shapes):
         after, deviation, followed = _follow(points, b, j, tolerance, angle)
         if followed is None:
-            tally.worst = max(tally.worst, deviation)
+            tally.curve_worst = max(tally.curve_worst, deviation)
             tally.ratio = max(tally.ratio, deviation / tolerance)
             tally.whole_turns += k > 0
             return after, None
@@ -674,7 +677,7 @@ def compare_runs(a: canon_read.Run, b: canon_read.Run, w: Written) -> Compared:
 
     def done(difference: str | None) -> Compared:
         return Compared(i, tally.worst, tally.ratio, tally.centres, tally.centre_worst,
-                        (idle[0], idle[1]), tally.whole_turns, difference)
+                        (idle[0], idle[1]), tally.whole_turns, tally.curve_worst, difference)
 
     while i < len(a.moves) or j < len(b.moves):
         difference = "the moves differ in number"
@@ -738,6 +741,7 @@ class Outcome:
     ratio: float = 0.0
     centres: int = 0
     centre_worst: float = 0.0
+    curve_worst: float = 0.0
     unread: Counter[str] = field(default_factory=Counter)
     notes: list[str] = field(default_factory=list)
     files: dict[str, bytes] = field(default_factory=dict)  # kept for a failure
@@ -777,18 +781,27 @@ def sweep_one(program: Program, cfg: Config) -> Outcome:
         return result
     result = compared_with_rs274(program, cfg, original, flat, result)
     if result.outcome in (DIFFERS, RS274_ERROR):
-        _triage(program, original, flat, result)
+        written = (result.files["flat.canon"].decode("latin-1") if result.outcome == DIFFERS
+                   else None)
+        _triage(program, original, flat, result, written,
+                written_rounding(cfg.target, cfg.inch))
     return result
 
 
-def _triage(program: Program, original: Rs274, flat: Flat, result: Outcome) -> None:
+def _triage(program: Program, original: Rs274, flat: Flat, result: Outcome,
+            written: str | None, w: Written) -> None:
     """A difference that starts in ngc's own reading of the original (its path there is not
-    rs274's) is ngc's, not the flattening's."""
+    rs274's) is ngc's, not the flattening's; the written program's path (``written``, its
+    transcript) is then held against ngc's of the original too."""
     a = canon_read.machine_path(original.out, flat.curves)
     own = canon_read.machine_path(ngc_transcript(program), flat.curves)
     compared = compare_runs(a, own, Written(0.0, 0.0))
     if compared.difference is not None:
         result.notes.insert(0, f"flattened: {result.outcome}: {result.detail}")
+        if written is not None:
+            kept = compare_runs(own, canon_read.machine_path(written), w)
+            result.notes.insert(0, "the written program's path in rs274 against ngc's of the "
+                                f"original: {kept.difference or 'the same'}")
         result.outcome = NGC_OTHERWISE
         result.detail = "ngc's path of the original is not rs274's: " + compared.difference
 
@@ -822,6 +835,7 @@ def compared_with_rs274(program: Program, cfg: Config, original: Rs274, flat: Fl
     compared = compare_runs(a, b, written_rounding(cfg.target, cfg.inch))
     result.moves, result.worst, result.ratio = compared.moves, compared.worst, compared.ratio
     result.centres, result.centre_worst = compared.centres, compared.centre_worst
+    result.curve_worst = compared.curve_worst
     if compared.whole_turns:
         result.notes.append(f"arcs whose printed end is a rounding off their start, taken as "
                             f"a whole turn or a sliver: {compared.whole_turns}")
@@ -948,6 +962,10 @@ def _extremes(results: list[Outcome]) -> None:
     print(f"\n{len(compared)} programs of the same path, {moves} moves compared")
     print(f"  largest end-point deviation: {worst.worst:.6f} mm ({worst.kind} {worst.name})")
     print(f"  largest deviation / its bound: {ratio.ratio:.3f} ({ratio.kind} {ratio.name})")
+    curve = max(compared, key=lambda r: r.curve_worst)
+    if curve.curve_worst:
+        print(f"  largest distance of lines written for a curve or an arc from it: "
+              f"{curve.curve_worst:.6f} mm ({curve.kind} {curve.name})")
     moved = [r for r in compared if r.centres]
     if moved:
         far = max(moved, key=lambda r: r.centre_worst)
