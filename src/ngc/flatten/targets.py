@@ -39,11 +39,14 @@ class Target(NamedTuple):
     digits: int = 0  # significant digits a number may have (Grbl's reader keeps 8; 0: any)
     rotary: bool = True  # A B C axes (Grbl's default build has X Y Z only)
     spiral: bool = True  # an arc whose end is off its start's circle (LinuxCNC runs a spiral)
+    raw_line: int = 0  # characters of a line, all counted (rs274: "Command too long" past 255)
+    min_radius: float = 0.002  # mm: a smaller arc is refused (rs274: "Zero-radius arc" below
+    # 0.00127 mm, 0.00005 in, in either units), so it is written as lines
 
 
 TARGETS = MappingProxyType({
     "linuxcnc": Target("linuxcnc", frozenset({"G17", "G18", "G19"}), True, True, "G43 H", True,
-                       True, True, 4, 5, 0),
+                       True, True, 4, 5, 0, raw_line=255),
     # Grbl 1.1 (commands.md): no M6 (a tool change is a pause), G43.1 for a tool length (Z
     # only), no G61/G64, no G95, G54-G59 only, no G96/G97, 79 characters (error:11)
     "grbl": Target("grbl", frozenset({"G17", "G18", "G19"}), True, False, "G43.1", False, False,

@@ -68,6 +68,7 @@ class Moves:
         self.rpm = 0.0
         self.feed = 0.0
         self.sync = 0.0
+        self.css = False
 
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
         self.moves.append((kind, end, None, 0, line, None, None,
@@ -118,7 +119,12 @@ class Moves:
         elif kind is ops.SetFeedMode:
             self.per_rev = op.mode == 1  # type: ignore[attr-defined]
         elif kind is ops.SetSpindleSpeed:
-            self.rpm = op.rpm  # type: ignore[attr-defined]
+            # (under G96 a surface speed: in metres a minute, the same whatever the units)
+            self.rpm = op.rpm * (0.3048 if self.css and self.toolpath.frame.inch_program  # type: ignore[attr-defined]
+                                 else 1.0)
+        elif kind is ops.SetSpindleMode:
+            self.css = op.css_max > 0.0  # type: ignore[attr-defined]
+            return
         elif kind is ops.StartSpeedFeedSync:  # (a distance a revolution, as a feed)
             self.sync = op.per_rev * self.toolpath.frame.scale  # type: ignore[attr-defined]
             return

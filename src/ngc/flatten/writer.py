@@ -141,6 +141,13 @@ class Flattener:
                           f"{text}")
         if self.source_lines and line:
             text = f"{text} (line {line})"
+        raw = self.target.raw_line
+        if raw and len(text) > raw:
+            if text.startswith("("):  # (a comment: cut to fit)
+                text = text[:raw - 1] + ")"
+            else:
+                raise Refused(line, f"a line of more than {raw} characters for "
+                              f"{self.target.name}: {text[:60]}...")
         self.out.write(text + "\n")
         self.lines += 1
 
@@ -298,7 +305,7 @@ class Flattener:
         # which depends on the units, and runs a spiral) is an arc for a target that runs it
         # alike in the same units; an arc too small for its offsets to be written is lines.
         spiral = abs(r1 - r0) > 1e-9 * max(1.0, r0)
-        if (min(r0, r1) < 2.0 * self.unit or (spiral and not (
+        if (min(r0, r1) < max(2.0 * self.unit, target.min_radius) or (spiral and not (
                 target.spiral and self.toolpath.frame.inch_program == self.inch))):
             for point in arc_points(arc, self.chord):
                 self.straight(FEED, arc.start, point, line)
