@@ -352,3 +352,12 @@ def test_a_tool_of_no_length_after_one_with_a_length(tmp_path: Path) -> None:
     assert done.returncode == 0, done.stderr
     body = [line for line in _code(done.stdout).splitlines() if line.strip()]
     assert body[body.index("G49") + 1] == "G0 X25.4 Y0 Z25.4"
+
+
+def test_tool_lengths_folded_when_asked() -> None:
+    folder = ROOT / "tests" / "golden" / "flatten"
+    done = _ngc("flatten", "-i", "machine.ini", "-t", "tools.tbl", "--fold-tool-length",
+                "--target", "grbl", "toolchange.ngc", cwd=folder)
+    assert done.returncode == 0, done.stderr
+    body = _code(done.stdout)
+    assert "G43" not in body and "G0 X10 Y10 Z14.5" in body  # (Z2 on tool 1, 12.5 long)

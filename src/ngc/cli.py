@@ -244,6 +244,8 @@ def _add_flatten(sub: argparse._SubParsersAction[argparse.ArgumentParser],
                       help="a tool change: pause (M5, a comment naming the tool and its "
                       "diameter, M0), strip (a comment only) or keep (T M6); default keep where "
                       "the target has M6 (linuxcnc), else pause")
+    flat.add_argument("--fold-tool-length", action="store_true",
+                      help="write tool lengths into the coordinates (no G43 H or G43.1)")
     flat.add_argument("--source-lines", action="store_true",
                       help="a (line N) comment on each line, the line of the program it comes from")
     flat.add_argument("--no-verify", action="store_true",

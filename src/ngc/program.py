@@ -180,11 +180,12 @@ class Program:
     def flatten(self, target: str = "linuxcnc", *, inch: bool = False,
                 decimals: int | None = None, source_lines: bool = False,
                 verify: bool = True, tolerance: float = 0.002,
-                toolchange: str | None = None) -> Flattened:
+                toolchange: str | None = None, fold_lengths: bool = False) -> Flattened:
         """The program written plain for ``target`` (see ``ngc flatten``): ``text``, ``lines``
         and ``verified`` (the written program run again and its machine path compared with
         this one's, within ``tolerance`` mm, which is also how close lines written for a curve
-        stay to it); ``toolchange``: ``pause``, ``strip`` or ``keep``.  Raises
+        stay to it); ``toolchange``: ``pause``, ``strip`` or ``keep``; ``fold_lengths``: tool
+        lengths in the coordinates rather than the target's offset.  Raises
         :class:`~ngc.flatten.Refused` with the line and the reason for a
         program that cannot be written truthfully, :class:`ValueError` for a target not written
         yet, :class:`NgcError` for a program error."""
@@ -195,7 +196,7 @@ class Program:
                              "programs")
         return flatten(self._source_text(), self.name, self._interpreter, target=target,
                        inch=inch, decimals=decimals, source_lines=source_lines, verify=verify,
-                       tolerance=tolerance, toolchange=toolchange)
+                       tolerance=tolerance, toolchange=toolchange, fold_lengths=fold_lengths)
 
     def _draw(self, output: str, how: object) -> None:
         from .commands.plot import PlotOptions, draw, draw_engine

@@ -85,7 +85,8 @@ def _flatten(options: argparse.Namespace, name: str, handle: ProgramReader, prog
                          target=options.target, inch=options.units == "inch",
                          decimals=options.decimals, source_lines=options.source_lines,
                          verify=not options.no_verify, tolerance=options.tolerance,
-                         toolchange=options.toolchange, out=spool.file, reader=handle)
+                         toolchange=options.toolchange, fold_lengths=options.fold_tool_length,
+                         out=spool.file, reader=handle)
     except ValueError as exc:
         progress.close()
         sys.stderr.write(f"ngc flatten: {exc}\n")

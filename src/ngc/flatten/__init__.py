@@ -100,6 +100,7 @@ def flatten(source: str | Iterable[str], name: str,
             new_interpreter: Callable[[Sink], Interpreter], *, target: str = "linuxcnc",
             inch: bool = False, decimals: int | None = None, source_lines: bool = False,
             verify: bool = True, tolerance: float = 0.002, toolchange: str | None = None,
+            fold_lengths: bool = False,
             out: TextIO | None = None, reader: ProgramReader | None = None,
             parallel: bool = True) -> Flattened:
     """The program ``source`` (its text, or its lines; named ``name``) written plain for
@@ -110,7 +111,8 @@ def flatten(source: str | Iterable[str], name: str,
 
     Curves the target cannot run as they are become lines within ``tolerance`` mm;
     ``toolchange`` is ``pause``, ``strip`` or ``keep`` (default: keep where the target has M6,
-    else pause).  The text is returned, or written to ``out`` as it is made (``text`` is then
+    else pause); ``fold_lengths`` writes tool lengths into the coordinates rather than as the
+    target's tool length offset.  The text is returned, or written to ``out`` as it is made (``text`` is then
     empty; the caller keeps it only if the result is verified).  The verification runs beside
     the writing, in a second process if ``parallel`` and the system forks (see
     :mod:`.channel`); ``reader`` is the program file's reader when ``source`` reads from one
@@ -134,7 +136,7 @@ def flatten(source: str | Iterable[str], name: str,
 
     writer = Flattener(toolpath, buffer, row, origins=origins, system=system, tool=tool,
                        inch=inch, decimals=decimals, source_lines=source_lines,
-                       tolerance=tolerance, toolchange=toolchange)
+                       tolerance=tolerance, toolchange=toolchange, fold_lengths=fold_lengths)
     written.append(writer)
     kept: list[str] = []
     checker: list[channel.Checker] = []  # (started with the first chunk)

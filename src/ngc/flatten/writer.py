@@ -82,7 +82,8 @@ class Flattener:
                  origins: Sequence[Sequence[float]], system: int,
                  tool: Callable[[int], ToolEntry | None], inch: bool = False,
                  decimals: int | None = None, source_lines: bool = False,
-                 tolerance: float = 0.002, toolchange: str | None = None) -> None:
+                 tolerance: float = 0.002, toolchange: str | None = None,
+                 fold_lengths: bool = False) -> None:
         self.toolpath = toolpath
         self.out = out
         self.target = target
@@ -96,6 +97,7 @@ class Flattener:
         self.source_lines = source_lines
         # lines for a curve stay this close to it (mm), less what rounding the ends may move
         self.tolerance = tolerance
+        self.fold_lengths = fold_lengths  # tool lengths folded into the coordinates, as asked
         rounding = 0.5 * 10.0 ** -self.decimals * self.scale * math.sqrt(3.0)
         self.chord = max(tolerance - rounding, 0.25 * tolerance)
         self.toolchange = toolchange or ("keep" if target.tool_change else "pause")
@@ -605,7 +607,7 @@ class Flattener:
                 self.kept, self.kept_offset = None, (0.0,) * 6
                 self._forget()
             return
-        if self.target.tool_length in ("G43 H", "G43.1"):
+        if self.target.tool_length in ("G43 H", "G43.1") and not self.fold_lengths:
             for number in (self.toolpath.tool, self.selected):
                 entry = self.tool_entry(number) if number > 0 else None
                 if entry is None or not _same(entry.offsets[:6], tlo):
