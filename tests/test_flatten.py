@@ -361,3 +361,13 @@ def test_tool_lengths_folded_when_asked() -> None:
     assert done.returncode == 0, done.stderr
     body = _code(done.stdout)
     assert "G43" not in body and "G0 X10 Y10 Z14.5" in body  # (Z2 on tool 1, 12.5 long)
+
+
+def test_a_spline_under_inverse_time_and_g96_without_a_limit(tmp_path: Path) -> None:
+    (tmp_path / "a.ngc").write_text("G21 G17 G90 G93\nG5 X10 Y0 I2 J2 P-2 Q2 F10\nM2\n")
+    done = _ngc("flatten", "a.ngc", cwd=tmp_path)
+    assert done.returncode == 1 and "a.ngc:2: ngc flatten: refused: a spline (G5, G5.1, G5.2) " \
+        "with no feed rate (inverse time, G93)" in done.stderr
+    (tmp_path / "b.ngc").write_text("G18 G21\nG96 S200 M3\nG1 X10 F100\nM2\n")
+    done = _ngc("flatten", "b.ngc", cwd=tmp_path)
+    assert done.returncode == 0 and "\nG96 S200\n" in done.stdout

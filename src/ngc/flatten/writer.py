@@ -381,6 +381,9 @@ class Flattener:
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
         """G5 as the biarcs LinuxCNC runs it as; G5.1 and G5.2 as lines within the tolerance."""
+        if self.feed_mm <= 0.0:  # (under G93 canon gives a curve no feed of its own)
+            raise Refused(line, "a spline (G5, G5.1, G5.2) with no feed rate (inverse time, "
+                          "G93): not written yet")
         to_machine = self.toolpath.frame.to_machine
         counts = []
         if is_cubic(curve):
@@ -585,7 +588,8 @@ class Flattener:
                           "centre would move")
         metres = self.rpm * (0.3048 if frame.inch_program else 1.0)
         speed = metres / (0.3048 if self.inch else 1.0)
-        self.write(f"G96 D{self._number(self.css_max)} S{self._number(speed)}", line)
+        limit = f" D{self._number(self.css_max)}" if self.css_max < 1e20 else ""  # (no D: none)
+        self.write(f"G96{limit} S{self._number(speed)}", line)
 
     def _diameter(self) -> str:
         """``, diameter D`` for the selected tool in the table (in the output's units)."""
