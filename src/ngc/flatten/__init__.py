@@ -122,8 +122,7 @@ def flatten(source: str | Iterable[str], name: str,
         raise ValueError(f"unknown target {target!r}: choose one of {', '.join(TARGETS)}")
     tee = Tee()
     toolpath = Toolpath(tee)
-    written: list[Flattener] = []  # (the writer, made below: how many moves it wrote for each)
-    original = Moves(toolpath, tolerance * FINE, counts=lambda: written[0].counts)
+    original = Moves(toolpath, tolerance * FINE)
     buffer = _Buffer()
     interp = new_interpreter(toolpath)
     origins, system = _origins(interp, 0)
@@ -137,7 +136,7 @@ def flatten(source: str | Iterable[str], name: str,
     writer = Flattener(toolpath, buffer, row, origins=origins, system=system, tool=tool,
                        inch=inch, decimals=decimals, source_lines=source_lines,
                        tolerance=tolerance, toolchange=toolchange, fold_lengths=fold_lengths)
-    written.append(writer)
+    original.source = writer  # (how many moves it wrote for each)
     kept: list[str] = []
     checker: list[channel.Checker] = []  # (started with the first chunk)
     first = [True]

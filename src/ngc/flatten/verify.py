@@ -11,7 +11,7 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Callable, Iterator
-from typing import NamedTuple
+from typing import NamedTuple, Protocol
 
 from ..canon import ops
 from ..canon.ops import Sink
@@ -41,11 +41,25 @@ class Verified(NamedTuple):
 # written it as lines, its feed (machine units a minute, at the spindle speed for a feed per
 # revolution; 0 for a rapid), and the moves written for it (1 for the written program's own)
 Move = tuple[str, Pos, "tuple[float, ...] | None", int, int, "tuple[float, ...] | None",
-             "ArcShape | list[Pos] | None", float, int]
+             "tuple[Pos, Pos, tuple[float, float, float], tuple[float, float, float], int] "
+             "| list[Pos] | None",
+             float, int]
 ONE = [1]
 CURVE = "curve"
 FINE = 0.02  # a curve's points for the verification: within this part of the tolerance
 FEED_TOLERANCE = 1e-3  # mm a minute, and as much a thousand: feeds the same but for rounding
+
+
+class Counted(Protocol):
+    """What says how many moves were written for the last one (the writer)."""
+
+    counts: list[int]
+
+
+class _Once:
+    """The written program's own moves: one each."""
+
+    counts = ONE
 
 
 class Moves:
@@ -57,11 +71,10 @@ class Moves:
     cannot hide a difference, since every written move is measured against the move it is
     given to and the groups follow each other in order; a wrong one only fails."""
 
-    def __init__(self, toolpath: Toolpath, fine: float,
-                 counts: Callable[[], list[int]] | None = None) -> None:
+    def __init__(self, toolpath: Toolpath, fine: float, counts: Counted | None = None) -> None:
         self.toolpath = toolpath
         self.fine = fine
-        self.counts = counts if counts is not None else (lambda: ONE)
+        self.source = counts if counts is not None else _Once()
         self.moves: list[Move] = []
         self.rate = 0.0  # the feed as canon set it, in machine units
         self.per_rev = False
@@ -73,21 +86,21 @@ class Moves:
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
         self.moves.append((kind, end, None, 0, line, None, None,
                            0.0 if kind == RAPID else self.sync if kind == SYNC else self.feed,
-                           self.counts()[0]))
+                           self.source.counts[0]))
 
     def arc(self, arc: ArcMove, line: int) -> None:
-        self._arc(arc, line, self.counts()[0])
+        self._arc(arc, line, self.source.counts[0])
 
     def _arc(self, arc: ArcMove, line: int, count: int) -> None:
         sign = 1.0 if arc.turns > 0 else -1.0
         axis = tuple(sign * v for v in arc.normal)
         self.moves.append((ARC, arc.end, arc.centre, abs(arc.turns), line, axis,
-                           ArcShape(arc.start, arc.end, arc.centre, arc.normal, arc.turns),
+                           (arc.start, arc.end, arc.centre, arc.normal, arc.turns),
                            self.feed, count))
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
         to_machine = self.toolpath.frame.to_machine
-        counts = self.counts()
+        counts = self.source.counts
         if curves.is_cubic(curve):
             a = start
             pieces = curves.cubic_pieces(curve, start, to_machine)
@@ -211,8 +224,8 @@ def compare(a: list[Move], b: list[Move], tolerance: float, start: int = 0) -> V
             n = (ARC, group[-1][1], n[2], count, n[4], n[5], None, n[7], 1)
         elif m[0] in (CURVE, ARC) and all(r[0] == FEED for r in group):
             shape = m[6]
-            if isinstance(shape, ArcShape):
-                shape = [shape.start, *curves.arc_points(shape, tolerance * FINE)]
+            if isinstance(shape, tuple):  # (an arc: its start, end, centre, normal, turns)
+                shape = [shape[0], *curves.arc_points(ArcShape(*shape), tolerance * FINE)]
             assert shape is not None
             deviation, difference = _follow(shape, m[7], group, tolerance)
             worst = max(worst, deviation)
@@ -231,9 +244,9 @@ def compare(a: list[Move], b: list[Move], tolerance: float, start: int = 0) -> V
                 return Verified(i, worst, f"{where}: the arc turns the other way")
             gap = _axis_gap(m, n)
             shapes = m[6], n[6]
-            if (gap > 0.25 * tolerance and isinstance(shapes[0], ArcShape)
-                    and isinstance(shapes[1], ArcShape)):
-                gap = min(gap, _arc_gap(shapes[0], shapes[1]))  # (a nearly straight arc)
+            if (gap > 0.25 * tolerance and isinstance(shapes[0], tuple)
+                    and isinstance(shapes[1], tuple)):  # (a nearly straight arc)
+                gap = min(gap, _arc_gap(ArcShape(*shapes[0]), ArcShape(*shapes[1])))
             worst = max(worst, gap)
         j += count
     if j < len(b):
