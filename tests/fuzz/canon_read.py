@@ -38,6 +38,7 @@ if str(SRC) not in sys.path:
     sys.path.insert(0, str(SRC))
 
 from ngc.canon import ops  # noqa: E402
+from ngc.flatten.curves import ArcShape  # noqa: E402
 from ngc.flatten.verify import FINE, Move, Moves  # noqa: E402
 from ngc.toolpath.tracker import ARC, Tee, Toolpath  # noqa: E402
 
@@ -230,7 +231,8 @@ def machine_path(calls: Iterable[Canon] | str, curves: Iterable[ops.NurbsFeed] =
             curve = next(known, None)
             if curve is None or curve.size != op.size:
                 unread["NURBS_FEED"] += 1
-                reader.moves.append(("nurbs", toolpath.pos, None, 0, call.counter, None, None))
+                reader.moves.append(("nurbs", toolpath.pos, None, 0, call.counter, None, None,
+                                     0.0, 1))
                 bounds.append(Bound(math.inf, math.inf, math.inf))
                 continue
             op = curve
@@ -240,7 +242,10 @@ def machine_path(calls: Iterable[Canon] | str, curves: Iterable[ops.NurbsFeed] =
         while len(bounds) < len(reader.moves):
             move = reader.moves[len(bounds)]
             bounds.append(rounding.bound(move[1], move[2]))
-    return Run(reader.moves, bounds, lines, unread)
+    # (an arc's shape is kept as a plain tuple: as ArcShape here, read by its names)
+    moves = [m if not isinstance(m[6], tuple) else (*m[:6], ArcShape(*m[6]), *m[7:])
+             for m in reader.moves]
+    return Run(moves, bounds, lines, unread)
 
 
 def describe(move: Move) -> str:
