@@ -371,3 +371,12 @@ def test_a_spline_under_inverse_time_and_g96_without_a_limit(tmp_path: Path) -> 
     (tmp_path / "b.ngc").write_text("G18 G21\nG96 S200 M3\nG1 X10 F100\nM2\n")
     done = _ngc("flatten", "b.ngc", cwd=tmp_path)
     assert done.returncode == 0 and "\nG96 S200\n" in done.stdout
+
+
+def test_a_new_feed_mode_gets_its_feed_again(tmp_path: Path) -> None:
+    # LinuxCNC sets the feed to 0 with G94/G95: the same F is written again after one
+    (tmp_path / "p.ngc").write_text("G21 S1000 M3\nG95 G1 X1 F0.1\nG94 F100\nG1 X2\nG95 F0.1\n"
+                                    "G1 X3\nM2\n")
+    done = _ngc("flatten", "p.ngc", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert "G1 G95 F0.1 X1 Y0 Z0\nG1 G94 F100 X2\nG1 G95 F0.1 X3\n" in done.stdout

@@ -236,6 +236,7 @@ class Flattener:
         elif self.per_rev != self.per_rev_written:
             words.append("G95" if self.per_rev else "G94")
             self.per_rev_written = self.per_rev
+            self.feed_written = None  # (a new feed mode sets the feed to 0: F again)
         rate = self._number(feed / self.scale)
         if rate != self.feed_written:
             words.append(f"F{rate}")
