@@ -357,6 +357,19 @@ class Flattener:
         ox, oy = sx + float(a), sy + float(b)
         unit = self.unit / self.scale
         if abs(math.hypot(sx - ox, sy - oy) - math.hypot(ex - ox, ey - oy)) > unit:
+            # the nearest of the neighbouring written centres whose radii agree; else onto the
+            # bisector (which a short chord's rounding may turn a long way)
+            best: tuple[float, str, str] | None = None
+            for da in (-1, 0, 1):
+                for db in (-1, 0, 1):
+                    px, py = ox + da * unit, oy + db * unit
+                    if abs(math.hypot(sx - px, sy - py) - math.hypot(ex - px, ey - py)) > unit:
+                        continue
+                    off = math.hypot(px - cx, py - cy)
+                    if best is None or off < best[0]:
+                        best = (off, self._number(px - sx), self._number(py - sy))
+            if best is not None:
+                return f"{first[0]}{best[1]} {second[0]}{best[2]}"
             dx, dy = ex - sx, ey - sy
             length = math.hypot(dx, dy)
             if length > 1e-9:
