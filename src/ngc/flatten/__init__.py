@@ -24,7 +24,7 @@ from ..toolpath.tracker import ArcMove, Cubics, Tee, Toolpath
 from . import channel
 from .targets import TARGETS
 from .verify import FINE, Moves, Verified
-from .writer import MM_PER_INCH, Flattener, Refused
+from .writer import MM_PER_INCH, SYSTEMS, Flattener, Refused
 
 __all__ = ["TARGETS", "Flattened", "Refused", "Verified", "flatten"]
 
@@ -186,8 +186,8 @@ def _origins(interp: Interpreter, line: int) -> tuple[list[list[float]], int]:
         base = G54_ORIGIN + k * COORD_STRIDE
         values = [numbered[base + i] * (MM_PER_INCH if i < 3 else 1.0) for i in range(6)]
         if numbered[base + 9] != 0.0:
-            raise Refused(line, f"{('G54', 'G55', 'G56', 'G57', 'G58', 'G59', 'G59.1', 'G59.2', 'G59.3')[k]} "
-                          "is rotated (R) in the parameter file: not flattened yet")
+            raise Refused(line, f"{SYSTEMS[k]} is rotated (R) in the parameter file: not "
+                          "flattened yet")
         origins.append(values)
     system = int(numbered[COORD_SYSTEM]) or 1
     return origins, min(max(system, 1), 9)

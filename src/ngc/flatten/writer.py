@@ -247,8 +247,7 @@ class Flattener:
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
         self.line = line
         if self.orient:
-            self.write(self.orient, line)
-            self.orient = ""
+            self._write_orient(line)
         if kind == FEED:
             code = "G1"
             feed = self._feed_words(line)
@@ -282,8 +281,7 @@ class Flattener:
     def _arc(self, arc: ArcMove, line: int) -> None:
         self.line = line
         if self.orient:
-            self.write(self.orient, line)
-            self.orient = ""
+            self._write_orient(line)
         n = arc.normal
         code, sign = _PLANES.get(n), 1  # (exactly on an axis, most arcs: or else)
         if code is None:
@@ -430,6 +428,11 @@ class Flattener:
         self.counts = _ONE
         self.where, self.raw = s
 
+    def _write_orient(self, line: int) -> None:
+        """An M19 R P no wait came with: written alone before what follows it."""
+        self.write(self.orient, line)
+        self.orient = ""
+
     def _per_rev(self) -> str:
         """The synchronised motion's distance a revolution, in the output's units."""
         return self._number(self.sync_per_rev * self._program_mm() / self.scale)
@@ -440,8 +443,7 @@ class Flattener:
     def other(self, op: ops.Op, line: int) -> None:
         kind = type(op)
         if self.orient and kind is not ops.WaitOrientComplete:
-            self.write(self.orient, line)
-            self.orient = ""
+            self._write_orient(line)
         if kind in RESOLVED:
             return
         if kind is ops.SetG5xOffset:
