@@ -20,7 +20,7 @@ from ..interp.interpreter import Interpreter
 from ..interp.parameters import COORD_STRIDE, G54_ORIGIN
 from ..interp.source import ProgramReader
 from ..toolpath.frame import Pos
-from ..toolpath.tracker import ArcMove, Cubics, Tee, Toolpath
+from ..toolpath.tracker import ArcMove, Cubics, Toolpath
 from . import channel
 from .targets import TARGETS
 from .verify import FINE, Moves, Verified
@@ -42,54 +42,73 @@ class Flattened(NamedTuple):
 
 
 class _Buffer:
-    """The writer's output, held until a chunk is full (``full``) and taken."""
+    """The writer's output, held until a chunk is full (``full()``) and taken."""
 
     def __init__(self) -> None:
         self.parts: list[str] = []
-        self.full = False
+        self.write = self.parts.append
 
-    def write(self, text: str) -> None:
-        self.parts.append(text)
-        if len(self.parts) >= CHUNK:
-            self.full = True
+    def full(self) -> bool:
+        return len(self.parts) >= CHUNK
 
     def take(self) -> str:
         text = "".join(self.parts)
         self.parts.clear()
-        self.full = False
         return text
 
 
-class _Chunker:
-    """The last reader of the toolpath: once the writer's buffer is full, after a move (or
-    another call) has been written whole, hand the chunk on."""
+class _Fan:
+    """The toolpath's reader: each call goes to the writer, then to the original's moves (which
+    reads how many moves the writer wrote for it); once the writer's buffer is full, after a
+    move (or another call) has been written whole, the chunk is handed on (``flush``)."""
 
-    def __init__(self, flush: Callable[[], None], buffer: _Buffer) -> None:
-        self.flush = flush
-        self.buffer = buffer
+    writer: Flattener
+    original: Moves
+
+    flush: Callable[[], None]
+
+    def __init__(self, buffer: _Buffer) -> None:
+        self.parts = buffer.parts
+
+    def attach(self, writer: Flattener, original: Moves, flush: Callable[[], None]) -> None:
+        """The readers (made with the toolpath this fan reads) and what takes a full chunk."""
+        self.writer, self.original, self.flush = writer, original, flush
+        self._write_straight, self._keep_straight = writer.straight, original.straight
 
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
-        if self.buffer.full:
+        self._write_straight(kind, start, end, line)
+        self._keep_straight(kind, start, end, line)
+        if len(self.parts) >= CHUNK:
             self.flush()
 
     def arc(self, arc: ArcMove, line: int) -> None:
-        if self.buffer.full:
+        self.writer.arc(arc, line)
+        self.original.arc(arc, line)
+        if len(self.parts) >= CHUNK:
             self.flush()
 
     def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
-        if self.buffer.full:
+        self.writer.nurbs(curve, start, line)
+        self.original.nurbs(curve, start, line)
+        if len(self.parts) >= CHUNK:
             self.flush()
 
     def tap(self, start: Pos, bottom: Pos, line: int) -> None:
-        if self.buffer.full:
+        self.writer.tap(start, bottom, line)
+        self.original.tap(start, bottom, line)
+        if len(self.parts) >= CHUNK:
             self.flush()
 
     def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
-        if self.buffer.full:
+        self.writer.bezier(cubics, motion, start, line)
+        self.original.bezier(cubics, motion, start, line)
+        if len(self.parts) >= CHUNK:
             self.flush()
 
     def other(self, op: ops.Op, line: int) -> None:
-        if self.buffer.full:
+        self.writer.other(op, line)
+        self.original.other(op, line)
+        if len(self.parts) >= CHUNK:
             self.flush()
 
     def finish(self) -> None:
@@ -120,10 +139,10 @@ def flatten(source: str | Iterable[str], name: str,
     row = TARGETS.get(target)
     if row is None:
         raise ValueError(f"unknown target {target!r}: choose one of {', '.join(TARGETS)}")
-    tee = Tee()
-    toolpath = Toolpath(tee)
-    original = Moves(toolpath, tolerance * FINE)
     buffer = _Buffer()
+    fan = _Fan(buffer)
+    toolpath = Toolpath(fan)
+    original = Moves(toolpath, tolerance * FINE)
     interp = new_interpreter(toolpath)
     origins, system = _origins(interp, 0)
     slots = list(interp.machine.state.tools.slots)  # (the operator's table: G10 L1 in the
@@ -159,7 +178,7 @@ def flatten(source: str | Iterable[str], name: str,
         else:
             original.moves.clear()
 
-    tee.readers.extend((writer, original, _Chunker(flush, buffer)))
+    fan.attach(writer, original, flush)
     try:
         writer.header(name)
         interp.startup()

@@ -14,6 +14,7 @@ writer does not know yet.
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Callable, Sequence
 from typing import Protocol
 
@@ -85,7 +86,6 @@ class Flattener:
                  tolerance: float = 0.002, toolchange: str | None = None,
                  fold_lengths: bool = False) -> None:
         self.toolpath = toolpath
-        self.out = out
         self.target = target
         self.origins = origins
         self.system = system
@@ -120,7 +120,12 @@ class Flattener:
         self.inverse = 1.0 / self.scale
         self.format = f"%.{self.decimals}f"
         self.unit = 10.0 ** -self.decimals * self.scale  # (mm: a unit of the last decimal)
-        self.big = 10.0 ** (target.digits - self.decimals) if target.digits else 0.0
+        # (a number at least this large has fewer decimals: the target keeps so many digits)
+        self.big = 10.0 ** (target.digits - self.decimals) if target.digits else math.inf
+        limits = [n for n in (target.max_line, target.raw_line) if n]
+        self.short = min(limits) if limits else sys.maxsize  # (a line no longer: no checks)
+        self.put = out.write
+        self.feed_changed = True  # (the feed's words are looked at again: see ``other``)
         self.lines = 0
         self.line = 0  # the program's line of the move being written
         self.motions = 0  # motion lines written
@@ -137,6 +142,14 @@ class Flattener:
 
     # -- writing ------------------------------------------------------------------------------
     def write(self, text: str, line: int = 0) -> None:
+        if len(text) > self.short or self.source_lines:
+            self._write_long(text, line)
+            return
+        self.put(text + "\n")
+        self.lines += 1
+
+    def _write_long(self, text: str, line: int) -> None:
+        """A line that may be past the target's limits, or that takes a ``(line N)``."""
         limit = self.target.max_line
         if limit and len(text) > limit and len(_significant(text)) > limit:
             raise Refused(line, f"a line of more than {limit} characters for {self.target.name}: "
@@ -150,7 +163,7 @@ class Flattener:
             else:
                 raise Refused(line, f"a line of more than {raw} characters for "
                               f"{self.target.name}: {text[:60]}...")
-        self.out.write(text + "\n")
+        self.put(text + "\n")
         self.lines += 1
 
     def header(self, name: str) -> None:
@@ -160,14 +173,16 @@ class Flattener:
         self._system_words(self.system, 0)
 
     def _number(self, v: float) -> str:
-        if (v >= self.big or v <= -self.big) and self.big:  # (fewer decimals: the target's
-            whole = len(str(int(abs(v))))  # reader keeps only so many digits)
-            text = f"{v:.{max(self.target.digits - whole, 0)}f}"
-            text = text.rstrip("0").rstrip(".") if "." in text else text
+        if -self.big < v < self.big:
+            text = (self.format % v).rstrip("0").rstrip(".")
             return "0" if text == "-0" else text
-        text = (self.format % v).rstrip("0")
-        if text[-1] == ".":
-            text = text[:-1]
+        if not self.target.digits or v != v or v in (math.inf, -math.inf):
+            text = (self.format % v).rstrip("0").rstrip(".")
+            return "0" if text == "-0" else text
+        # (fewer decimals: the target's reader keeps only so many digits)
+        whole = len(str(int(abs(v))))
+        text = f"{v:.{max(self.target.digits - whole, 0)}f}"
+        text = text.rstrip("0").rstrip(".") if "." in text else text
         return "0" if text == "-0" else text
 
     def _forget(self) -> None:
@@ -188,39 +203,56 @@ class Flattener:
 
     def _axes(self, q: Sequence[float], force: bool = False) -> str:
         """The axis words that change (``force``: X Y Z whatever; A B C only once they are
-        away from 0, so that a program for three axes has no rotary word)."""
-        words = []
+        away from 0, so that a program for three axes has no rotary word), each after a space."""
+        words = ""
         raw, where, number = self.raw, self.where, self._number
-        for i in (0, 1, 2):
-            v = q[i]
-            if v == raw[i] and not force:
-                continue  # (the same coordinate as the move before: the same word)
-            raw[i] = v
-            text = number(v)
-            if text == where[i] and not force:
-                continue
-            words.append(AXES[i] + text)
-            where[i] = text
+        x, y, z = q[0], q[1], q[2]
+        if x != raw[0] or force:  # (the same coordinate as the move before: the same word)
+            raw[0] = x
+            text = number(x)
+            if text != where[0] or force:
+                words = " X" + text
+                where[0] = text
+        if y != raw[1] or force:
+            raw[1] = y
+            text = number(y)
+            if text != where[1] or force:
+                words += " Y" + text
+                where[1] = text
+        if z != raw[2] or force:
+            raw[2] = z
+            text = number(z)
+            if text != where[2] or force:
+                words += " Z" + text
+                where[2] = text
         if q[3] != raw[3] or q[4] != raw[4] or q[5] != raw[5]:
-            for i in (3, 4, 5):
-                v = q[i]
-                if v == raw[i]:
-                    continue
-                raw[i] = v
-                text = number(v)
-                was = where[i]
-                if text == was or (was is None and text == "0"):
-                    where[i] = text
-                    continue
-                if not self.target.rotary:
-                    raise Refused(self.line, f"a move of the {AXES[i]} axis: "
-                                  f"{self.target.name} has X Y Z only")
-                words.append(AXES[i] + text)
+            words += self._rotary(q)
+        return words
+
+    def _rotary(self, q: Sequence[float]) -> str:
+        """The A B C words that change, for a target that has them."""
+        words = ""
+        raw, where = self.raw, self.where
+        for i in (3, 4, 5):
+            v = q[i]
+            if v == raw[i]:
+                continue
+            raw[i] = v
+            text = self._number(v)
+            was = where[i]
+            if text == was or (was is None and text == "0"):
                 where[i] = text
-        return " ".join(words)
+                continue
+            if not self.target.rotary:
+                raise Refused(self.line, f"a move of the {AXES[i]} axis: "
+                              f"{self.target.name} has X Y Z only")
+            words += " " + AXES[i] + text
+            where[i] = text
+        return words
 
     def _feed_words(self, line: int = 0) -> str:
-        """The feed's words where it changed (G94/G95 and F), else ''."""
+        """The feed's words where it changed (G94/G95 and F), each after a space, else ''."""
+        self.feed_changed = False
         key = (self.feed_mm, self.per_rev, self.rpm, self.spindle_on)
         if key == self.feed_key:
             return ""
@@ -234,14 +266,14 @@ class Flattener:
                               "has none, with no spindle speed to turn it into a feed per minute")
             feed *= self.rpm
         elif self.per_rev != self.per_rev_written:
-            words.append("G95" if self.per_rev else "G94")
+            words.append(" G95" if self.per_rev else " G94")
             self.per_rev_written = self.per_rev
             self.feed_written = None  # (a new feed mode sets the feed to 0: F again)
         rate = self._number(feed / self.scale)
         if rate != self.feed_written:
-            words.append(f"F{rate}")
+            words.append(" F" + rate)
             self.feed_written = rate
-        return " ".join(words)
+        return "".join(words)
 
     # -- the toolpath's consumer protocol -----------------------------------------------------
     def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
@@ -249,10 +281,7 @@ class Flattener:
         if self.orient:
             self._write_orient(line)
         if kind == FEED:
-            code = "G1"
-            feed = self._feed_words(line)
-            if feed:
-                code = "G1 " + feed
+            code = "G1" + self._feed_words(line) if self.feed_changed else "G1"
         elif kind == RAPID:
             code = "G0"
         elif kind == PROBE:
@@ -263,13 +292,13 @@ class Flattener:
                               f"{self.target.name} has none")
             q = self._coordinates(end, line)
             axes = self._axes(q) or self._axes(q, force=True)
-            self.write(f"G33 {axes} K{self._per_rev()}", line)
+            self.write(f"G33{axes} K{self._per_rev()}", line)
             self.motions += 1
             self.counts = _ONE
             return
         q = self._coordinates(end, line)
         axes = self._axes(q) or self._axes(q, force=True)  # (a move of no length still goes in)
-        self.write(code + " " + axes, line)
+        self.write(code + axes, line)
         self.motions += 1
         self.counts = _ONE
 
@@ -321,10 +350,9 @@ class Flattener:
         words = ("G3" if turns > 0 else "G2") if code == self.plane else (
             code + (" G3" if turns > 0 else " G2"))
         self.plane = code
-        feed = self._feed_words(line)
-        if feed:
-            words += " " + feed
-        words += " " + self._axes(q, force=True) + " " + self._centre_words(
+        if self.feed_changed:
+            words += self._feed_words(line)
+        words += self._axes(q, force=True) + " " + self._centre_words(
             first, second, was, arc.start, c, line, spiral)
         if turns > 1 or turns < -1:
             words += f" P{abs(turns)}"
@@ -423,7 +451,7 @@ class Flattener:
         s = list(self.where), list(self.raw)
         q = self._coordinates(bottom, line)
         axes = self._axes(q) or self._axes(q, force=True)
-        self.write(f"G33.1 {axes} K{self._per_rev()}", line)
+        self.write(f"G33.1{axes} K{self._per_rev()}", line)
         self.motions += 1
         self.counts = _ONE
         self.where, self.raw = s
@@ -442,6 +470,7 @@ class Flattener:
 
     def other(self, op: ops.Op, line: int) -> None:
         kind = type(op)
+        self.feed_changed = True  # (what sets the feed, its mode or the spindle comes here)
         if self.orient and kind is not ops.WaitOrientComplete:
             self._write_orient(line)
         if kind in RESOLVED:
