@@ -13,14 +13,14 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from typing import NamedTuple, TextIO
 
-from ..canon import ops
 from ..canon.ops import Sink
 from ..config.tooltable import ToolEntry, scaled_entry
+from ..errors import NgcError
 from ..interp.interpreter import Interpreter
 from ..interp.parameters import COORD_STRIDE, G54_ORIGIN
 from ..interp.source import ProgramReader
-from ..toolpath.frame import Pos
-from ..toolpath.tracker import ArcMove, Cubics, Toolpath
+from ..toolpath.held import Held
+from ..toolpath.tracker import Toolpath
 from . import channel
 from .targets import TARGETS
 from .verify import FINE, Moves, Verified
@@ -57,64 +57,6 @@ class _Buffer:
         return text
 
 
-class _Fan:
-    """The toolpath's reader: each call goes to the writer, then to the original's moves (which
-    reads how many moves the writer wrote for it); once the writer's buffer is full, after a
-    move (or another call) has been written whole, the chunk is handed on (``flush``)."""
-
-    writer: Flattener
-    original: Moves
-
-    flush: Callable[[], None]
-
-    def __init__(self, buffer: _Buffer) -> None:
-        self.parts = buffer.parts
-
-    def attach(self, writer: Flattener, original: Moves, flush: Callable[[], None]) -> None:
-        """The readers (made with the toolpath this fan reads) and what takes a full chunk."""
-        self.writer, self.original, self.flush = writer, original, flush
-        self._write_straight, self._keep_straight = writer.straight, original.straight
-
-    def straight(self, kind: str, start: Pos, end: Pos, line: int) -> None:
-        self._write_straight(kind, start, end, line)
-        self._keep_straight(kind, start, end, line)
-        if len(self.parts) >= CHUNK:
-            self.flush()
-
-    def arc(self, arc: ArcMove, line: int) -> None:
-        self.writer.arc(arc, line)
-        self.original.arc(arc, line)
-        if len(self.parts) >= CHUNK:
-            self.flush()
-
-    def nurbs(self, curve: ops.NurbsFeed, start: Pos, line: int) -> None:
-        self.writer.nurbs(curve, start, line)
-        self.original.nurbs(curve, start, line)
-        if len(self.parts) >= CHUNK:
-            self.flush()
-
-    def tap(self, start: Pos, bottom: Pos, line: int) -> None:
-        self.writer.tap(start, bottom, line)
-        self.original.tap(start, bottom, line)
-        if len(self.parts) >= CHUNK:
-            self.flush()
-
-    def bezier(self, cubics: Cubics, motion: str, start: Pos, line: int) -> None:
-        self.writer.bezier(cubics, motion, start, line)
-        self.original.bezier(cubics, motion, start, line)
-        if len(self.parts) >= CHUNK:
-            self.flush()
-
-    def other(self, op: ops.Op, line: int) -> None:
-        self.writer.other(op, line)
-        self.original.other(op, line)
-        if len(self.parts) >= CHUNK:
-            self.flush()
-
-    def finish(self) -> None:
-        """The end is flushed by :func:`flatten`."""
-
-
 def flatten(source: str | Iterable[str], name: str,
             new_interpreter: Callable[[Sink], Interpreter], *, target: str = "linuxcnc",
             inch: bool = False, decimals: int | None = None, source_lines: bool = False,
@@ -140,9 +82,10 @@ def flatten(source: str | Iterable[str], name: str,
     if row is None:
         raise ValueError(f"unknown target {target!r}: choose one of {', '.join(TARGETS)}")
     buffer = _Buffer()
-    fan = _Fan(buffer)
-    toolpath = Toolpath(fan)
-    original = Moves(toolpath, tolerance * FINE)
+    held = Held()  # (the interpreter and the writer each run a stretch at a time)
+    toolpath = Toolpath(held)
+    view = held.follow(toolpath)
+    original = Moves(view, tolerance * FINE)
     interp = new_interpreter(toolpath)
     origins, system = _origins(interp, 0)
     slots = list(interp.machine.state.tools.slots)  # (the operator's table: G10 L1 in the
@@ -152,7 +95,7 @@ def flatten(source: str | Iterable[str], name: str,
         entry = next((e for e in slots[1:] if e.number == number), None)
         return None if entry is None else scaled_entry(entry, MM_PER_INCH)
 
-    writer = Flattener(toolpath, buffer, row, origins=origins, system=system, tool=tool,
+    writer = Flattener(view, buffer, row, origins=origins, system=system, tool=tool,
                        inch=inch, decimals=decimals, source_lines=source_lines,
                        tolerance=tolerance, toolchange=toolchange, fold_lengths=fold_lengths)
     original.source = writer  # (how many moves it wrote for each)
@@ -178,12 +121,22 @@ def flatten(source: str | Iterable[str], name: str,
         else:
             original.moves.clear()
 
-    fan.attach(writer, original, flush)
+    def handed() -> None:  # (after each batch of moves: a full chunk goes on)
+        if buffer.full():
+            flush()
+
+    held.add(writer, original)
+    held.after = handed
     try:
         writer.header(name)
         interp.startup()
         lines = source.splitlines() if isinstance(source, str) else source
-        interp.run(lines, file=name, reader=reader)
+        try:
+            interp.run(lines, file=name, reader=reader)
+        except NgcError:
+            held.settle()  # (a refusal of a line before the error comes first)
+            raise
+        held.settle()
         if not writer.ended:  # (a program ended by %: so is the one written, or by M2)
             writer.write("%" if row.percent else "M2")
         flush()

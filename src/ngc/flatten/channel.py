@@ -8,6 +8,7 @@ process as ``marshal`` bytes: the moves are plain tuples, and it is quicker than
 from __future__ import annotations
 
 import contextlib
+import gc
 import marshal
 import math
 import multiprocessing
@@ -82,6 +83,7 @@ def _serve(chunks: Connection, result: Connection, new_interpreter: NewInterpret
     side stops it (SIGKILL) and answers for Ctrl-C and SIGTERM itself."""
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    gc.freeze()  # (the writer's objects, copied at the fork: the collector leaves them be)
 
     def received() -> Iterator[Chunk]:
         while True:

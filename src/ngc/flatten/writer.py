@@ -22,6 +22,7 @@ from ..canon import ops
 from ..config.tooltable import ToolEntry
 from ..render import curves
 from ..toolpath.frame import Pos
+from ..toolpath.held import View
 from ..toolpath.tracker import FEED, PROBE, RAPID, ArcMove, Cubics, Toolpath
 from .curves import NO_ARC, arc_points, cubic_pieces, is_cubic, nurbs_points
 from .targets import Target
@@ -79,7 +80,7 @@ class Flattener:
     X Y Z A B C, by system 1-9) and ``system`` the one selected then; ``tool`` finds a tool's
     entry in the table (lengths in mm); ``inch`` writes in inches (else mm)."""
 
-    def __init__(self, toolpath: Toolpath, out: Output, target: Target, *,
+    def __init__(self, toolpath: Toolpath | View, out: Output, target: Target, *,
                  origins: Sequence[Sequence[float]], system: int,
                  tool: Callable[[int], ToolEntry | None], inch: bool = False,
                  decimals: int | None = None, source_lines: bool = False,

@@ -46,6 +46,13 @@ class Frame:
         self.shift: Pos = ZERO6  # g5x + g92 + tlo, used when there is no rotation
         self.identity = True
 
+    def copy(self) -> Frame:
+        """A frame the same as this one now."""
+        frame = Frame.__new__(Frame)
+        for name in Frame.__slots__:
+            setattr(frame, name, getattr(self, name))
+        return frame
+
     # -- what canon sets ----------------------------------------------------------------------
     def set_units(self, inch: bool) -> None:
         """``USE_LENGTH_UNITS``: the program's units from now on."""
