@@ -36,6 +36,7 @@ _PLANES = {(0.0, 0.0, 1.0): "G17", (0.0, 1.0, 0.0): "G18", (1.0, 0.0, 0.0): "G19
 _OFFSETS = {"G17": (("I", 0), ("J", 1)), "G18": (("I", 0), ("K", 2)),
             "G19": (("J", 1), ("K", 2))}
 TOOL_CHANGES = ("pause", "strip", "keep")
+TEXTS = 1 << 16  # numbers whose text the writer keeps
 _ONE = [1]  # (a straight move: one line)
 # Canon operations that change nothing the output must say: resolved into the coordinates or
 # said by the moves themselves.
@@ -119,7 +120,9 @@ class Flattener:
         self.raw: list[float | None] = [None] * 6  # and the coordinates it was written from
         self.shift: tuple[float, ...] = tuple(origins[system - 1])  # (+ the kept tool length)
         self.inverse = 1.0 / self.scale
+        self.same = self.inverse == 1.0 and not any(self.shift)  # (machine points are written)
         self.format = f"%.{self.decimals}f"
+        self.texts: dict[float, str] = {}  # numbers as written, kept for the next time
         self.unit = 10.0 ** -self.decimals * self.scale  # (mm: a unit of the last decimal)
         # (a number at least this large has fewer decimals: the target keeps so many digits)
         self.big = 10.0 ** (target.digits - self.decimals) if target.digits else math.inf
@@ -174,27 +177,37 @@ class Flattener:
         self._system_words(self.system, 0)
 
     def _number(self, v: float) -> str:
-        if -self.big < v < self.big:
+        text = self.texts.get(v)  # (a number written before: most are)
+        if text is not None:
+            return text
+        if -self.big < v < self.big or (not self.target.digits or v != v
+                                         or v in (math.inf, -math.inf)):
             text = (self.format % v).rstrip("0").rstrip(".")
-            return "0" if text == "-0" else text
-        if not self.target.digits or v != v or v in (math.inf, -math.inf):
-            text = (self.format % v).rstrip("0").rstrip(".")
-            return "0" if text == "-0" else text
-        # (fewer decimals: the target's reader keeps only so many digits)
-        whole = len(str(int(abs(v))))
-        text = f"{v:.{max(self.target.digits - whole, 0)}f}"
-        text = text.rstrip("0").rstrip(".") if "." in text else text
-        return "0" if text == "-0" else text
+        else:  # (fewer decimals: the target's reader keeps only so many digits)
+            whole = len(str(int(abs(v))))
+            text = f"{v:.{max(self.target.digits - whole, 0)}f}"
+            text = text.rstrip("0").rstrip(".") if "." in text else text
+        if text == "-0":
+            text = "0"
+        if len(self.texts) >= TEXTS:
+            self.texts.clear()
+        self.texts[v] = text
+        return text
 
     def _forget(self) -> None:
         """The offsets changed: the next move says every axis again, from the new shift."""
         origin, kept = self.origins[self.system - 1], self.kept_offset
         self.shift = tuple(origin[i] + kept[i] for i in range(6))
+        self.same = self.inverse == 1.0 and not any(self.shift)
         self.where = [None] * 6
         self.raw = [None] * 6
 
-    def _coordinates(self, p: Sequence[float], line: int) -> tuple[float, ...]:
+    def _coordinates(self, p: Sequence[float], line: int) -> Sequence[float]:
         """A machine point (mm, degrees) in the output's coordinates and units."""
+        if self.same:
+            if (p[0] + p[1] + p[2] + p[3] + p[4] + p[5]) * 0.0 != 0.0:
+                raise Refused(line, "a coordinate past a double's range")
+            return p
         o, k = self.shift, self.inverse
         x, y, z = (p[0] - o[0]) * k, (p[1] - o[1]) * k, (p[2] - o[2]) * k
         a, b, c = p[3] - o[3], p[4] - o[4], p[5] - o[5]
@@ -206,26 +219,32 @@ class Flattener:
         """The axis words that change (``force``: X Y Z whatever; A B C only once they are
         away from 0, so that a program for three axes has no rotary word), each after a space."""
         words = ""
-        raw, where, number = self.raw, self.where, self._number
+        raw, where = self.raw, self.where  # (where[i] is raw[i] written)
         x, y, z = q[0], q[1], q[2]
-        if x != raw[0] or force:  # (the same coordinate as the move before: the same word)
+        if x != raw[0]:  # (the same coordinate as the move before: the same word)
             raw[0] = x
-            text = number(x)
+            text = self._number(x)
             if text != where[0] or force:
                 words = " X" + text
                 where[0] = text
-        if y != raw[1] or force:
+        elif force:
+            words = f" X{where[0]}"
+        if y != raw[1]:
             raw[1] = y
-            text = number(y)
+            text = self._number(y)
             if text != where[1] or force:
                 words += " Y" + text
                 where[1] = text
-        if z != raw[2] or force:
+        elif force:
+            words += f" Y{where[1]}"
+        if z != raw[2]:
             raw[2] = z
-            text = number(z)
+            text = self._number(z)
             if text != where[2] or force:
                 words += " Z" + text
                 where[2] = text
+        elif force:
+            words += f" Z{where[2]}"
         if q[3] != raw[3] or q[4] != raw[4] or q[5] != raw[5]:
             words += self._rotary(q)
         return words
@@ -298,8 +317,12 @@ class Flattener:
             self.counts = _ONE
             return
         q = self._coordinates(end, line)
-        axes = self._axes(q) or self._axes(q, force=True)  # (a move of no length still goes in)
-        self.write(code + axes, line)
+        text = code + (self._axes(q) or self._axes(q, force=True))  # (a move of no length
+        if len(text) > self.short or self.source_lines:  # still goes in)
+            self._write_long(text, line)
+        else:  # (as ``write``: the common case, kept quick)
+            self.put(text + "\n")
+            self.lines += 1
         self.motions += 1
         self.counts = _ONE
 
@@ -345,24 +368,27 @@ class Flattener:
         if (turns > 1 or turns < -1) and not target.turns:
             self._turns(arc, turns, line)
             return
-        was = (self.where[first[1]], self.where[second[1]])
+        was = (self.where[i], self.where[j])
         q = self._coordinates(arc.end, line)
-        c = self._coordinates((centre[0], centre[1], centre[2], 0.0, 0.0, 0.0), line)
+        o, k = self.shift, self.inverse  # (the centre in the output's coordinates)
+        cx, cy = (centre[i] - o[i]) * k, (centre[j] - o[j]) * k
+        if (cx + cy) * 0.0 != 0.0:
+            raise Refused(line, "a coordinate past a double's range")
         words = ("G3" if turns > 0 else "G2") if code == self.plane else (
             code + (" G3" if turns > 0 else " G2"))
         self.plane = code
         if self.feed_changed:
             words += self._feed_words(line)
         words += self._axes(q, force=True) + " " + self._centre_words(
-            first, second, was, arc.start, c, line, spiral)
+            first, second, was, arc.start, cx, cy, line, spiral)
         if turns > 1 or turns < -1:
             words += f" P{abs(turns)}"
         self.write(words, line)
         self.motions += 1
 
     def _centre_words(self, first: tuple[str, int], second: tuple[str, int],
-                      was: tuple[str | None, str | None], start: Pos,
-                      c: Sequence[float], line: int, spiral: bool) -> str:
+                      was: tuple[str | None, str | None], start: Pos, cx: float,
+                      cy: float, line: int, spiral: bool) -> str:
         """The centre's offset words from the start as written.  Where the rounded numbers
         leave the radii to the written start and end more than a unit of the last decimal
         apart, the centre moves onto the perpendicular bisector of the two (the nearest such
@@ -376,7 +402,6 @@ class Flattener:
             b0 = self._number(s[j]) if b0 is None else b0
         sx, sy = float(a0), float(b0)
         end = self.where[i], self.where[j]
-        cx, cy = c[i], c[j]
         a, b = self._number(cx - sx), self._number(cy - sy)
         if end[0] is None or end[1] is None or spiral:  # (a spiral keeps its centre)
             return f"{first[0]}{a} {second[0]}{b}"
@@ -474,6 +499,14 @@ class Flattener:
         self.feed_changed = True  # (what sets the feed, its mode or the spindle comes here)
         if self.orient and kind is not ops.WaitOrientComplete:
             self._write_orient(line)
+        if kind is ops.SetFeedRate:  # (the commonest first)
+            self.feed_mm = op.rate * self._program_mm()  # type: ignore[attr-defined]
+            return
+        if kind is ops.Comment:
+            text = op.text  # type: ignore[attr-defined]
+            if not text.startswith("interpreter: "):  # (rs274's notes of its own changes)
+                self.write(f"({_comment_text(text)})", line)
+            return
         if kind in RESOLVED:
             return
         if kind is ops.SetG5xOffset:
@@ -484,8 +517,6 @@ class Flattener:
                 self._system_words(system, line)
         elif kind is ops.UseToolLengthOffset:
             self._tool_length(line)
-        elif kind is ops.SetFeedRate:
-            self.feed_mm = op.rate * self._program_mm()  # type: ignore[attr-defined]
         elif kind is ops.SetFeedMode:
             self.per_rev = op.mode == 1  # type: ignore[attr-defined]
         elif kind is ops.SetMotionControlMode:
@@ -570,10 +601,6 @@ class Flattener:
             if self.coolant:  # (M9 is both: canon says each)
                 self.write("M9", line)
             self.coolant = False
-        elif kind is ops.Comment:
-            text = op.text  # type: ignore[attr-defined]
-            if not text.startswith("interpreter: "):  # (rs274's notes of its own changes)
-                self.write(f"({_comment_text(text)})", line)
         elif kind is ops.Message:
             self.write(f"(MSG,{_comment_text(op.text)})", line)  # type: ignore[attr-defined]
         elif kind is ops.ProgramStop:
