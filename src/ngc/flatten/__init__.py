@@ -125,7 +125,9 @@ def flatten(source: str | Iterable[str], name: str,
         if buffer.full():
             flush()
 
-    held.add(writer, original)
+    held.add(writer)
+    if verify:  # (the original's moves, kept to compare)
+        held.add(original)
     held.after = handed
     try:
         writer.header(name)

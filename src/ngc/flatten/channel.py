@@ -19,6 +19,11 @@ from collections.abc import Callable, Iterator
 from multiprocessing.connection import Connection
 from typing import Any
 
+try:
+    import fcntl
+except ImportError:  # (not on Windows, which has no fork either)
+    fcntl = None  # type: ignore[assignment]
+
 from ..canon.ops import Sink
 from ..interp.interpreter import Interpreter
 from .verify import Move, Verified, check
@@ -27,6 +32,7 @@ Chunk = tuple[str, list[Move]]
 NewInterpreter = Callable[[Sink], Interpreter]
 _END = None  # (the message after the last chunk)
 _DEPTH = 4  # chunks a thread's queue holds before the writer waits
+PIPE_BYTES = 1 << 20  # (Linux's largest for a user by default: a chunk is 0.4 MB)
 
 
 class Checker:
@@ -54,6 +60,7 @@ class _ProcessChecker(Checker):
         self._process.start()
         self._chunks_in.close()
         self._result_out.close()
+        _widen(self._chunks_out)
 
     def send(self, text: str, moves: list[Move]) -> None:
         with contextlib.suppress(OSError):  # (the checker stopped: finish says so)
@@ -75,6 +82,15 @@ class _ProcessChecker(Checker):
             # it set its own handler, while it still had the writer's)
         self._process.join()
         self._result_in.close()
+
+
+def _widen(end: Connection) -> None:
+    """A pipe that holds a few chunks where the system allows (Linux): the writer goes on
+    while the checker reads the chunk before."""
+    size = getattr(fcntl, "F_SETPIPE_SZ", None) if fcntl is not None else None
+    if size is not None:
+        with contextlib.suppress(OSError):
+            fcntl.fcntl(end.fileno(), size, PIPE_BYTES)
 
 
 def _serve(chunks: Connection, result: Connection, new_interpreter: NewInterpreter,
