@@ -103,6 +103,9 @@ def dispatch(args: list[str]) -> int:
     if options.command is None:
         parser.print_help(sys.stderr)
         return EXIT_USAGE
+    if options.command == "check" and options.dialect in dialects.GRBL_ROWS:
+        # one command checks every row of ngc.grbl.DIALECTS: the row is kept apart
+        options.grbl_row, options.dialect = options.dialect, dialects.GRBL
     # (each command's module is loaded when it runs: ``ngc rs274`` starts without the others)
     module = importlib.import_module(f".commands.{RUNNERS[options.command]}", __package__)
     command: Callable[[argparse.Namespace], int] = module.run
@@ -157,7 +160,8 @@ def build_parser() -> argparse.ArgumentParser:
         description="Run programs through the interpreter, writing nothing to disk: per file, "
         "the first error (on stderr) and a summary of the motion (on stdout). Each file is in "
         "the dialect --dialect gives, else in the one its first line names. With --dialect "
-        "grbl: every line Grbl 1.1 would reject, as its check mode ($C) answers it "
+        "grbl (or grblhal): every line Grbl 1.1 (grblHAL) would reject, as its check mode ($C) "
+        "answers it "
         "(file:line: error:N message (line), on stderr), and a summary line per file.",
         epilog=PROGRAM_HELP,
     )
@@ -368,8 +372,8 @@ def _dialect_options(choices: tuple[str, ...] = dialects.DIALECTS) -> argparse.A
     the dialects the command takes (``ngc check`` also takes grbl)."""
     parent = argparse.ArgumentParser(add_help=False)
     group = parent.add_argument_group("dialect")
-    grbl = (", or grbl (each line held against what Grbl 1.1 accepts: docs/grbl.md)"
-            if dialects.GRBL in choices else "")
+    grbl = (", or grbl or grblhal (each line held against what Grbl 1.1 or grblHAL accepts: "
+            "docs/grbl.md)" if dialects.GRBL in choices else "")
     group.add_argument("--dialect", choices=choices, default=None,
                        help="the program's dialect: linuxcnc (LinuxCNC's rs274, the default) or "
                        f"engine (seed 003's codes by name and engine segments){grbl}; without "

@@ -10,8 +10,9 @@ ngc reads two dialects: ``linuxcnc`` (rs274's, the default) and ``engine`` (``sp
    both are comments in either dialect, so the marked program runs unchanged;
 3. otherwise, the LinuxCNC dialect.
 
-``ngc check`` also takes ``--dialect grbl``: each line held against what Grbl 1.1 accepts
-(:mod:`ngc.grbl`), nothing run.  It is a dialect of that command only, and only when given.
+``ngc check`` also takes ``--dialect grbl`` and ``--dialect grblhal``: each line held against
+what Grbl 1.1 (or grblHAL) accepts (:mod:`ngc.grbl`, a row of ``ngc.grbl.DIALECTS`` each),
+nothing run.  They are dialects of that command only, and only when given.
 
 The engine dialect has its own machine input, the setup sheet (:func:`ngc.engine.read_setup`,
 ``--setup FILE``); the LinuxCNC inputs (INI file, tool table, parameter file, probe) are the
@@ -39,7 +40,9 @@ LINUXCNC = "linuxcnc"
 ENGINE = "engine"
 DIALECTS = (LINUXCNC, ENGINE)
 GRBL = "grbl"  # ngc check's only: the controller's acceptance of each line (ngc.grbl.DIALECTS)
-CHECK_DIALECTS = (*DIALECTS, GRBL)
+# the rows of ngc.grbl.DIALECTS, by name (ngc.grbl is not loaded here); GRBL is the first
+GRBL_ROWS = (GRBL, "grblhal")
+CHECK_DIALECTS = (*DIALECTS, *GRBL_ROWS)
 
 _MARK = re.compile(r"\s*(?:\(\s*dialect\s*:\s*(\w+)\s*\)|;\s*dialect\s*:\s*(\w+))\s*",
                    re.IGNORECASE)

@@ -8,18 +8,21 @@ position for G91), a G10's new offset, the position G28/G30 go to; the arc check
 
 from __future__ import annotations
 
+import math
 import struct
 
-from .block import Block, Rejected
+from .block import Block, NotChecked, Rejected
 from .codes import (
     ABSOLUTE,
     ABSOLUTE_OVERRIDE,
     ARC_RADIUS_ERROR,
     AXIS_MOTION,
+    AXIS_NON_MODAL,
     AXIS_NONE,
     AXIS_TOOL_LENGTH,
     AXIS_WORDS_EXIST,
     CCW_ARC,
+    COMMAND_VALUE_NOT_INTEGER,
     COORD_SYSTEM,
     CW_ARC,
     DISTANCE,
@@ -30,14 +33,16 @@ from .codes import (
     GO_HOME_0,
     GO_HOME_1,
     GROUP_COORD_SYSTEM,
+    GROUP_TOOL_LENGTH,
     INCHES,
     INVALID_LINE_NUMBER,
     INVALID_TARGET,
     INVERSE_TIME,
-    LENGTH_DYNAMIC,
+    LENGTH_CANCEL,
     LINEAR,
     MOTION,
     MOTION_NONE,
+    NEGATIVE_VALUE,
     NO_AXIS_WORDS,
     NO_AXIS_WORDS_IN_PLANE,
     NO_OFFSETS_IN_PLANE,
@@ -53,10 +58,11 @@ from .codes import (
     UNSUPPORTED_COMMAND,
     UNSUPPORTED_COORD_SYS,
     UNUSED_WORDS,
+    VALUE_OUT_OF_RANGE,
     VALUE_WORD_MISSING,
     word_bits,
 )
-from .numbers import MM_PER_INCH, add, c_unsigned, f32, hypot
+from .numbers import MM_PER_INCH, add, arm_unsigned, c_unsigned, f32, hypot
 from .rules import Rules
 from .state import GrblState, Plan, home_index
 
@@ -65,6 +71,8 @@ from .state import GrblState, Plan, home_index
 ARC_ABSOLUTE_MM = f32(0.005)
 ARC_MOST_MM = f32(0.5)
 ARC_RELATIVE = f32(0.001)
+# grblHAL's isintf (nuts_bolts.c): a value within 0.001 of its whole part is whole
+WHOLE_WITHIN = f32(0.001)
 
 # the first and second axis of an arc, by plane (PLANE_XY G17: X Y, PLANE_ZX G18: Z X,
 # PLANE_YZ G19: Y Z)
@@ -76,11 +84,17 @@ class Check:
 
     def __init__(self, rules: Rules) -> None:
         self.rules = rules
-        bits = word_bits(rules.axes)
+        bits = word_bits(rules.axes, rules.extra_words)
         self.bits = bits
         self.axes = tuple(enumerate(rules.axes))
         self.axis_bits = sum(bits[a] for a in rules.axes)
-        self.length_axis = rules.axes.index(rules.tool_length_axis)
+        # the axes a tool length offset applies to, and the axis words G43.1 must have
+        # exactly (0: any, at least one)
+        if rules.tool_length_axis:
+            self.length_axes = frozenset({rules.axes.index(rules.tool_length_axis)})
+            self.length_words = 1 << rules.axes.index(rules.tool_length_axis)
+        else:
+            self.length_axes, self.length_words = frozenset(range(len(rules.axes))), 0
         self.always_used = bits["N"] | bits["F"] | bits["S"] | bits["T"]
         self.same = struct.Struct(f"<{len(rules.axes)}f").pack
 
@@ -88,7 +102,10 @@ class Check:
         """The block checked against ``state``, as a :class:`Plan`; raises :class:`Rejected`.
         In Grbl's order (its numbers in ``gcode.c``): line number [0], feed rate [2, 3],
         spindle speed [4], dwell [10], units [12], G43.1 [14], coordinate system [15], the
-        non-modal commands [19], the motion [20], the words left unused [0]."""
+        non-modal commands [19], the motion [20], the words left unused [0].  A block with a
+        code or word no check models raises :class:`NotChecked`."""
+        if block.unchecked:
+            raise NotChecked(block.unchecked)
         modes = block.modes
         axis_command = block.axis_command
         if block.axis_words and axis_command == AXIS_NONE:
@@ -100,8 +117,9 @@ class Check:
         plan.spindle_speed = block.values.get("S", state.spindle_speed)
         if modes[NON_MODAL] == DWELL:
             unused = self._used(block, unused, "P")
+            _not_negative_p(block)
         xyz = self._axis_values(block)
-        self._tool_length(block, axis_command)
+        self._tool_length(block, state, plan, xyz)
         if (block.command_words & (1 << GROUP_COORD_SYSTEM)
                 and state.modes[COORD_SYSTEM] != modes[COORD_SYSTEM]):
             plan.coord_system = list(state.stored[modes[COORD_SYSTEM]])
@@ -141,11 +159,21 @@ class Check:
                 xyz[n] = f32(value * MM_PER_INCH) if inches else value
         return xyz
 
-    def _tool_length(self, block: Block, axis_command: int) -> None:
-        """G43.1 takes exactly one axis word, the tool length axis's (error 37)."""
-        if (axis_command == AXIS_TOOL_LENGTH and block.modes[TOOL_LENGTH] == LENGTH_DYNAMIC
-                and block.axis_words != 1 << self.length_axis):
+    def _tool_length(self, block: Block, state: GrblState, plan: Plan,
+                     xyz: list[float]) -> None:
+        """G43.1 takes exactly one axis word, the tool length axis's (error 37), or with any
+        axis (grblHAL's TOOL_LENGTH_OFFSET_AXIS -1) at least one; the offsets a G43.1 or G49
+        leaves (``plan.tool_length``: G43.1 sets the axes given, G49 clears all)."""
+        if not block.command_words & (1 << GROUP_TOOL_LENGTH):
+            return
+        if block.modes[TOOL_LENGTH] == LENGTH_CANCEL:
+            plan.tool_length = [0.0] * len(xyz)
+            return
+        words = block.axis_words
+        if (words != self.length_words) if self.length_words else not words:
             raise Rejected(G43_DYNAMIC_AXIS_ERROR)
+        plan.tool_length = [xyz[n] if words & (1 << n) else offset
+                            for n, offset in enumerate(state.tool_length_offset)]
 
     def _set_coordinate_data(self, block: Block, state: GrblState, plan: Plan,
                              xyz: list[float], unused: int) -> int:
@@ -153,24 +181,27 @@ class Check:
         to the number of systems (29; P0 is the system in use), L 2 or 20 (20), no R with L2
         (20); the new offset in ``plan.data``."""
         values = block.values
-        if not block.axis_words:
+        l_value = c_unsigned(values.get("L", 0.0), 8)
+        hal = self.rules.g10_hal_order
+        if not block.axis_words and not (hal and l_value != 20 and "R" in values):
             raise Rejected(NO_AXIS_WORDS)
         if "P" not in values and "L" not in values:
             raise Rejected(VALUE_WORD_MISSING)
+        _not_negative_p(block)
         index = c_unsigned(values.get("P", 0.0), 8)
+        if hal:
+            _g10_l(l_value, values)
         if index > self.rules.coordinate_systems:
             raise Rejected(UNSUPPORTED_COORD_SYS)
-        l_value = c_unsigned(values.get("L", 0.0), 8)
-        if l_value != 20 and (l_value != 2 or "R" in values):
-            raise Rejected(UNSUPPORTED_COMMAND)
+        _g10_l(l_value, values)
         index = index - 1 if index > 0 else block.modes[COORD_SYSTEM]
         data = list(state.stored[index])
         for n, _ in self.axes:
             if block.axis_words & (1 << n):
                 if l_value == 20:  # the offset that makes the current position the value given
                     data[n] = f32(f32(state.position[n] - state.coord_offset[n]) - xyz[n])
-                    if n == self.length_axis:
-                        data[n] = f32(data[n] - state.tool_length_offset)
+                    if n in self.length_axes:
+                        data[n] = f32(data[n] - state.tool_length_offset[n])
                 else:
                     data[n] = xyz[n]
         plan.data, plan.data_index = data, index
@@ -184,8 +215,8 @@ class Check:
         for n, _ in self.axes:
             if block.axis_words & (1 << n):
                 offset[n] = f32(f32(state.position[n] - plan.coord_system[n]) - xyz[n])
-                if n == self.length_axis:
-                    offset[n] = f32(offset[n] - state.tool_length_offset)
+                if n in self.length_axes:
+                    offset[n] = f32(offset[n] - state.tool_length_offset[n])
         plan.target = offset
 
     def _target(self, block: Block, state: GrblState, plan: Plan, xyz: list[float]) -> None:
@@ -219,8 +250,8 @@ class Check:
                 target[n] = xyz[n]
             elif absolute:
                 target[n] = add(xyz[n], add(system[n], state.coord_offset[n]))
-                if n == self.length_axis:
-                    target[n] = add(target[n], state.tool_length_offset)
+                if n in self.length_axes:
+                    target[n] = add(target[n], state.tool_length_offset[n])
             else:
                 target[n] = add(xyz[n], position[n])
         return target
@@ -230,7 +261,8 @@ class Check:
         arc and probe checks."""
         motion = block.modes[MOTION]
         if motion == MOTION_NONE:
-            if block.axis_words:
+            if block.axis_words and not (self.rules.g80_non_modal_axes
+                                         and plan.axis_command == AXIS_NON_MODAL):
                 raise Rejected(AXIS_WORDS_EXIST)
         elif plan.axis_command == AXIS_MOTION:
             if motion in (SEEK, LINEAR) and not block.axis_words:
@@ -250,6 +282,9 @@ class Check:
         first, second = PLANE_AXES[block.modes[PLANE]]
         if not block.axis_words & ((1 << first) | (1 << second)):
             raise Rejected(NO_AXIS_WORDS_IN_PLANE)
+        if self.rules.arc_turns and "P" in block.values:
+            _turns(block.values["P"])
+            unused &= ~self.bits["P"]
         position, target = state.position, plan.target
         x = f32(target[first] - position[first])
         y = f32(target[second] - position[second])
@@ -277,6 +312,28 @@ class Check:
             raise Rejected(NO_AXIS_WORDS)
         if self.same(*state.position) == self.same(*plan.target):
             raise Rejected(INVALID_TARGET)
+
+
+def _not_negative_p(block: Block) -> None:
+    """G4's and G10's P may not be negative (error 4): grblHAL tests it here (its P may be
+    negative as read); Grbl has rejected a negative P as it read it."""
+    if block.values.get("P", 0.0) < 0.0:
+        raise Rejected(NEGATIVE_VALUE)
+
+
+def _g10_l(l_value: int, values: dict[str, float]) -> None:
+    """G10's L: 2 (without R) or 20 (error 20)."""
+    if l_value != 20 and (l_value != 2 or "R" in values):
+        raise Rejected(UNSUPPORTED_COMMAND)
+
+
+def _turns(p_value: float) -> None:
+    """An arc's P, its turns (grblHAL): whole (error 23, by ``isintf``), and not 0 once made a
+    32-bit unsigned integer (error 39; a negative P is 0 on an ARM)."""
+    if not abs(f32(p_value - math.trunc(p_value))) < WHOLE_WITHIN:
+        raise Rejected(COMMAND_VALUE_NOT_INTEGER)
+    if arm_unsigned(p_value) == 0:
+        raise Rejected(VALUE_OUT_OF_RANGE)
 
 
 def _feed_rate(block: Block, state: GrblState, axis_command: int) -> float:

@@ -38,6 +38,7 @@ NO_OFFSETS_IN_PLANE = 35
 UNUSED_WORDS = 36
 G43_DYNAMIC_AXIS_ERROR = 37
 MAX_VALUE_EXCEEDED = 38
+VALUE_OUT_OF_RANGE = 39  # grblHAL's (errors.h Status_GcodeValueOutOfRange): Grbl has no 39
 
 MESSAGES: Mapping[int, str] = MappingProxyType({
     1: "G-code words consist of a letter and a value. Letter was not found.",
@@ -95,6 +96,12 @@ GROUP_CONTROL = 10  # G61
 GROUP_STOPPING = 11  # M0 M1 M2 M30
 GROUP_SPINDLE = 12  # M3 M4 M5
 GROUP_COOLANT = 13  # M7 M8 M9
+# grblHAL's groups beyond Grbl's (its gcode.c modal_groups_t: G10, G11 and M6, M9, M10)
+GROUP_RETURN = 14  # G98 G99
+GROUP_SCALING = 15  # G50 G51
+GROUP_TOOL_CHANGE = 16  # M6 M61
+GROUP_OVERRIDE = 17  # M48-M51 M53
+GROUP_IO = 18  # M62-M68
 
 # -- the slots of a block's modes (a list: its copy of the parser state's modes, then the
 #    non-modal command of the block) -------------------------------------------------------------
@@ -140,13 +147,17 @@ AXIS_TOOL_LENGTH = 3  # G43.1 G49
 class Code(NamedTuple):
     """A G or M code Grbl accepts: its modal group, the slot of the block's modes it sets
     (None: it sets nothing, as G40, G61, G91.1 and M1) to ``value``, the axis command it is,
-    and for coolant whether ``value`` is added to the bits already on (M7, M8) or replaces them."""
+    and for coolant whether ``value`` is added to the bits already on (M7, M8) or replaces them.
+    ``unchecked``: a code the controller's parser takes but whose checks no row models yet (what
+    it is, for the report); a block with one is read (its word errors are exact) but not
+    checked."""
 
     group: int
     slot: int | None
     value: int
     axis: int = AXIS_NONE
     adds: bool = False
+    unchecked: str = ""
 
 
 # G codes by (whole number, hundredths), as Grbl's parser splits a G word's value
@@ -239,11 +250,97 @@ OFFSETS = "IJK"  # arc centre offsets: an index each, as the axes X Y Z
 NOT_NEGATIVE = frozenset("FNPTS")  # a negative value is error 4
 
 
-def word_bits(axes: str) -> Mapping[str, int]:
+def word_bits(axes: str, extra: str = "") -> Mapping[str, int]:
     """The value words Grbl reads, each a bit of a block's value words: F, I J K, L, N, P, R,
-    S, T and the axes.
+    S, T, a build's ``extra`` words (``Rules.extra_words``) and the axes.
 
     >>> list(word_bits("XYZ"))
     ['F', 'I', 'J', 'K', 'L', 'N', 'P', 'R', 'S', 'T', 'X', 'Y', 'Z']
     """
-    return MappingProxyType({letter: 1 << n for n, letter in enumerate("FIJKLNPRST" + axes)})
+    letters = "FIJKLNPRST" + extra + axes
+    return MappingProxyType({letter: 1 << n for n, letter in enumerate(letters)})
+
+
+# -- grblHAL's parser (grblHAL/core gcode.c, gc_execute_block, commit 04ce2c5c; the default build:
+#    N_TOOLS 0, N_WorkCoordinateSystems 9, mill mode $32=0, TOOL_LENGTH_OFFSET_AXIS -1) -----------
+CANNED_CYCLE = "a canned cycle (G73 G81-G83 G85 G86 G89)"
+_HAL_UNCHECKED_MOTION = {
+    (5, 0): "G5, a cubic spline", (5, 10): "G5.1, a quadratic spline",
+    (33, 0): "G33, spindle-synchronised motion (it needs a spindle with feedback)",
+    (76, 0): "G76, a threading cycle (it needs a spindle with feedback)",
+    **{(n, 0): CANNED_CYCLE for n in (73, 81, 82, 83, 85, 86, 89)},
+}  # fmt: skip
+HAL_G_CODES: Mapping[tuple[int, int], Code] = MappingProxyType({
+    **{key: code for key, code in G_CODES.items() if key not in ((49, 0), (43, 10))},
+    # G43.1 and G49: "case 43: case 49" sets no axis command for G49 (its axis words are a
+    # motion's); G43.1 is the only one that checks for a second axis command
+    (43, 10): Code(GROUP_TOOL_LENGTH, TOOL_LENGTH, LENGTH_DYNAMIC, AXIS_TOOL_LENGTH),
+    (49, 0): Code(GROUP_TOOL_LENGTH, TOOL_LENGTH, LENGTH_CANCEL),
+    # G59.1-G59.3 "if(N_WorkCoordinateSystems == 9 ...)": systems 7 to 9
+    **{(59, 10 * n): Code(GROUP_COORD_SYSTEM, COORD_SYSTEM, 5 + n) for n in (1, 2, 3)},
+    # G98 G99, the canned cycles' retract mode: set, used by nothing this row checks
+    (98, 0): Code(GROUP_RETURN, None, 0), (99, 0): Code(GROUP_RETURN, None, 0),
+    # G92.2 (G92 off, not stored) and G92.3 (G92 back from storage)
+    (92, 20): Code(GROUP_NON_MODAL, NON_MODAL, NO_ACTION, unchecked="G92.2 (G92 cleared, "
+                   "not stored)"),
+    (92, 30): Code(GROUP_NON_MODAL, NON_MODAL, NO_ACTION, unchecked="G92.3 (G92 restored from "
+                   "storage)"),
+    # "case 50: case 51": the axis command is set to scaling, without the conflict check
+    (50, 0): Code(GROUP_SCALING, None, 0, unchecked="G50/G51, scaling"),
+    (51, 0): Code(GROUP_SCALING, None, 0, unchecked="G50/G51, scaling"),
+    # G95 is refused at step 4 unless the spindle reports its speed (the driver's)
+    (95, 0): Code(GROUP_FEED_MODE, None, 0, unchecked="G95, feed per revolution (it needs a "
+                  "spindle that reports its speed)"),
+    **{key: Code(GROUP_MOTION, None, 0, AXIS_MOTION, unchecked=what)
+       for key, what in _HAL_UNCHECKED_MOTION.items()},
+})  # fmt: skip
+
+HAL_G_FRACTIONS: Mapping[int, Fraction] = MappingProxyType({
+    **{n: Fraction(AXIS_MOTION, COMMAND_VALUE_NOT_INTEGER)
+       for n in (0, 1, 2, 3, 73, 81, 82, 83, 85, 86, 89)},
+    5: Fraction(AXIS_MOTION, UNSUPPORTED_COMMAND),  # G5.x but G5.1: after the axis check
+    49: Fraction(AXIS_NONE, 0),  # G49.x is G49
+    # tested before any axis check: G38.x (but .2-.5), G43 and G43.x (but .1: N_TOOLS 0), G28.x
+    # G30.x (but .1), G92.x (but .1-.3), G33.x, G76.x, G59.x (but .1-.3), G61.x, G90.x, G91.x
+    **dict.fromkeys((38, 43, 28, 30, 92, 33, 76, 59, 61, 90, 91), _TESTED),
+    **dict.fromkeys((4, 10, 53, 17, 18, 19, 93, 94, 95, 20, 21, 40, 80, 54, 55, 56, 57, 58, 98,
+                     99, 50, 51), _WHOLE_ONLY),
+})  # fmt: skip
+
+_HAL_M_CODES = {
+    **_M_CODES,
+    # M60: a pause (pallet shuttle, not in check mode) that does not end the program
+    60: Code(GROUP_STOPPING, PROGRAM_FLOW, PAUSED),
+    # M6: refused unless the stream can be suspended or the driver changes tools, and ignored
+    # with $341 "ignore"; M61 sets the tool (Q); M48-M53: override control (P); M62-M68: the
+    # driver's outputs and inputs (refused without them)
+    6: Code(GROUP_TOOL_CHANGE, None, 0, unchecked="M6, a tool change (it depends on the driver "
+            "and $341)"),
+    61: Code(GROUP_TOOL_CHANGE, None, 0, unchecked="M61, set the tool number"),
+    **{n: Code(GROUP_OVERRIDE, None, 0, unchecked=f"M{n}, override control")
+       for n in (48, 49, 50, 51, 53)},
+    **{n: Code(GROUP_IO, None, 0, unchecked=f"M{n}, the driver's ports")
+       for n in (62, 63, 64, 65, 66, 67, 68)},
+}  # fmt: skip
+
+
+class CodeTable(NamedTuple):
+    """A parser's G codes (by whole number and hundredths), what it does with the fractions it
+    does not list, and its M codes."""
+
+    g_codes: Mapping[tuple[int, int], Code]
+    g_fractions: Mapping[int, Fraction]
+    m_codes: Mapping[int, Code]
+
+
+def code_table(parser: str, mist_coolant: bool) -> CodeTable:
+    """The codes of ``parser`` (``Rules.parser``: ``grbl`` or ``grblhal``), M7 only with mist
+    coolant.
+
+    >>> sorted(code_table("grblhal", True).m_codes)[:10]
+    [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]
+    """
+    if parser == "grbl":
+        return CodeTable(G_CODES, G_FRACTIONS, m_codes(mist_coolant))
+    m = MappingProxyType({n: c for n, c in _HAL_M_CODES.items() if n != MIST or mist_coolant})
+    return CodeTable(HAL_G_CODES, HAL_G_FRACTIONS, m)

@@ -117,3 +117,80 @@ def _reduced(text: str, line_chars: int) -> str:
         if comment.startswith(";") or not comment.endswith(")"):
             open_comment = comment[0]
     return kept(text)[: line_chars + 1] + open_comment
+
+
+# -- grblHAL's line reader (grblHAL/core protocol.c, protocol_main_loop, and gcode.c,
+#    gc_normalize_block, at commit 04ce2c5c) -----------------------------------------------------
+_HAL_CONTROL = re.compile(r"[\x00-\x1f]")
+_HAL_REALTIME = frozenset("?!~\x7f")  # the stream's real-time characters, and DEL
+_HAL_DROPPED = re.compile(r"[\x00-\x20)]")  # blanks, and a ")" that closes no comment
+DEL = "\x7f"
+
+
+def past_ascii(line: str) -> bool:
+    """A character past 0x7F: what grblHAL keeps of it is its driver's stream's (the real-time
+    override commands are such bytes), so the grblHAL row does not check such a line."""
+    return not line.isascii()
+
+
+def hal_received(line: str) -> str:
+    """What grblHAL's ``protocol.c`` puts in its line buffer (its length is held against
+    ``LINE_BUFFER_SIZE``): the leading blanks and control characters dropped, control
+    characters dropped anywhere, spaces and comments kept; the real-time ``?`` ``!`` ``~``
+    taken by the stream except in a ``(`` comment or a line that starts with ``$`` or ``[``
+    (``keep_rt_commands``); DEL takes back the character before it.
+
+    >>> hal_received("  G0 X1 ? (a?) ; b?"), hal_received("\\tG1\\x01X2")
+    ('G0 X1  (a?) ; b', 'G1X2')
+    """
+    start = 0
+    while start < len(line) and line[start] <= " ":
+        start += 1
+    line = line[start:]
+    if _HAL_CONTROL.search(line):
+        line = _HAL_CONTROL.sub("", line)
+    if _HAL_REALTIME.isdisjoint(line):
+        return line
+    kept: list[str] = []
+    for char in line:
+        if char == DEL:
+            if kept:
+                kept.pop()
+        elif char == "~" or char == "!" or char == "?":
+            if _keeps_realtime(kept):
+                kept.append(char)
+        else:
+            kept.append(char)
+    return "".join(kept)
+
+
+def _keeps_realtime(kept: list[str]) -> bool:
+    """``keep_rt_commands`` after the characters ``kept`` (``protocol.c``: set by a ``$`` or
+    ``[`` first and by a ``(`` outside a ``;`` comment, cleared by ``)`` and ``;``)."""
+    keep = bool(kept) and kept[0] in "$["
+    parentheses = semicolon = False
+    for char in kept:
+        if char == "(" and not keep:
+            parentheses = not semicolon
+            keep = parentheses
+        elif char == ")" and not semicolon:
+            parentheses = keep = False
+        elif char == ";" and not parentheses:
+            keep, semicolon = False, True
+    return keep
+
+
+def hal_normalized(received: str) -> str:
+    """What grblHAL's parser reads of a line (``gc_normalize_block``): a ``/`` that starts it
+    dropped (block delete is off at power-up; elsewhere ``/`` stays, and is error 1), ``(...)``
+    and ``;`` comments dropped, a ``)`` that closes none dropped, blanks dropped, letters
+    upper-cased.
+
+    >>> hal_normalized("/g0 x1 (a) ; b"), hal_normalized("G0 X1)/"), hal_normalized("%")
+    ('G0X1', 'G0X1/', '%')
+    """
+    if received.startswith("/"):
+        received = received[1:]
+    if "(" in received or ";" in received:
+        received = _COMMENT.sub("", received)
+    return _HAL_DROPPED.sub("", received).upper()

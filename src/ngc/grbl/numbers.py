@@ -34,7 +34,8 @@ MAX_INT_DIGITS = 8  # read_float keeps the first 8 digits of a number and drops 
 SINGLE_INTEGERS = 1 << 24  # the integers below this are exact in single precision
 
 
-def read_value(sign: str, whole: str, fraction: str) -> float:
+def read_value(sign: str, whole: str, fraction: str, digits: int = MAX_INT_DIGITS,
+               leading_zeros: bool = True) -> float:
     """The value Grbl's ``read_float`` gives for ``sign whole.fraction`` (at least one digit):
     the first 8 digits as an integer, made a float, then scaled by 0.01f, 0.1f or 10.0f a step
     at a time, each step rounded; digits after the 8th count only as a power of ten before the
@@ -44,13 +45,20 @@ def read_value(sign: str, whole: str, fraction: str) -> float:
     (12.5, -0.25, 0.0)
     >>> read_value("", "123456789", "")  # 12345678 (rounded to single) times ten
     123456784.0
+
+    ``digits`` other than 8 and ``leading_zeros`` false are grblHAL's ``read_float`` (9 digits,
+    not counting the zeros before the first other digit).
+
+    >>> read_value("", "0", "000000012", 9, False), read_value("", "123456789", "", 9, False)
+    (1.2000000104706032e-08, 123456792.0)
     """
-    if len(whole) >= MAX_INT_DIGITS:
-        kept, exponent = whole[:MAX_INT_DIGITS], len(whole) - MAX_INT_DIGITS
+    if digits != MAX_INT_DIGITS or not leading_zeros:
+        integer, exponent = _significant(whole, fraction, digits, leading_zeros)
+    elif len(whole) >= MAX_INT_DIGITS:
+        integer, exponent = int(whole[:MAX_INT_DIGITS]), len(whole) - MAX_INT_DIGITS
     else:
         kept = (whole + fraction)[:MAX_INT_DIGITS]
-        exponent = len(whole) - len(kept)
-    integer = int(kept)
+        integer, exponent = int(kept), len(whole) - len(kept)
     value = float(integer) if integer < SINGLE_INTEGERS else f32(float(integer))
     if exponent < 0 and integer:
         pack, unpack = _SINGLE.pack, _SINGLE.unpack  # (no overflow going down: f32 inlined)
@@ -63,6 +71,24 @@ def read_value(sign: str, whole: str, fraction: str) -> float:
         for _ in range(exponent):
             value = f32(value * 10.0)
     return -value if sign == "-" else value
+
+
+def _significant(whole: str, fraction: str, digits: int, leading_zeros: bool) -> tuple[int, int]:
+    """``read_float``'s integer and power of ten, a digit at a time: a digit counts unless it is
+    a leading zero and ``leading_zeros`` is false; past ``digits`` counted, a digit before the
+    point adds a power of ten and one after it nothing."""
+    integer = exponent = counted = 0
+    for decimal, text in ((False, whole), (True, fraction)):
+        for char in text:
+            digit = ord(char) - 48
+            if leading_zeros or digit or integer:
+                counted += 1
+            if counted <= digits:
+                exponent -= decimal
+                integer = integer * 10 + digit
+            elif not decimal:
+                exponent += 1
+    return integer, exponent
 
 
 def c_unsigned(value: float, bits: int) -> int:
@@ -90,7 +116,20 @@ def c_round(value: float) -> float:
     return math.copysign(math.floor(abs(value) + 0.5), value)
 
 
-def whole_and_hundredths(value: float) -> tuple[int, int]:
+def arm_unsigned(value: float) -> int:
+    """A float converted to a 32-bit unsigned integer as an ARM does it (``vcvt.u32.f32``):
+    truncated toward zero, saturating (a negative value or NaN is 0, past the range all bits
+    set).
+
+    >>> arm_unsigned(38.7), arm_unsigned(-1.0), arm_unsigned(1e10)
+    (38, 0, 4294967295)
+    """
+    if not value > 0.0:
+        return 0
+    return min(int(value), (1 << 32) - 1)
+
+
+def whole_and_hundredths(value: float, bits: int = 8) -> tuple[int, int]:
     """A G or M word's value as Grbl's parser splits it: the whole number (an 8-bit unsigned
     integer) and the hundredths left over (``round(100 * (value - whole))``, a 16-bit unsigned
     integer; not 0 for any value that is not whole).
@@ -99,7 +138,16 @@ def whole_and_hundredths(value: float) -> tuple[int, int]:
     ((38, 20), (91, 10), (2, 0))
     >>> whole_and_hundredths(-0.5)  # -50 as a 16-bit unsigned integer
     (0, 65486)
+
+    With ``bits`` 32, grblHAL's ``uint32_t`` and ``uint_fast16_t`` (32 bits on an ARM), both
+    converted saturating: ``G-0.5`` is G0.
+
+    >>> whole_and_hundredths(-0.5, 32), whole_and_hundredths(f32(59.1), 32)
+    ((0, 0), (59, 10))
     """
+    if bits == 32:
+        whole = arm_unsigned(value)
+        return whole, arm_unsigned(c_round(f32(100.0 * f32(value - f32(float(whole))))))
     whole = c_unsigned(value, 8)
     return whole, c_unsigned(c_round(f32(100.0 * f32(value - whole))), 16)
 

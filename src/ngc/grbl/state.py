@@ -12,7 +12,6 @@ from __future__ import annotations
 from .codes import (
     ABSOLUTE,
     AXIS_MOTION,
-    AXIS_TOOL_LENGTH,
     COMPLETED,
     COOLANT,
     COOLANT_OFF,
@@ -21,7 +20,6 @@ from .codes import (
     FEED_MODE,
     GO_HOME_0,
     GO_HOME_1,
-    LENGTH_CANCEL,
     LINEAR,
     MOTION,
     MOTION_NONE,
@@ -39,7 +37,6 @@ from .codes import (
     SET_HOME_1,
     SPINDLE,
     SPINDLE_OFF,
-    TOOL_LENGTH,
     UNITS_PER_MINUTE,
 )
 from .rules import Rules
@@ -68,7 +65,7 @@ class GrblState:
         self.stored = [[0.0] * axes for _ in range(rules.coordinate_systems + 2)]
         self.coord_system = list(self.stored[0])  # the offset of the system in use
         self.coord_offset = [0.0] * axes  # G92
-        self.tool_length_offset = 0.0  # G43.1
+        self.tool_length_offset = [0.0] * axes  # G43.1, by axis (Grbl: on its one axis)
 
 
 def home_index(rules: Rules, code: int) -> int:
@@ -80,11 +77,12 @@ class Plan:
     """A block that passed every check, with what its checks worked out: the feed rate and
     spindle speed it leaves, its axis command, the offset of its coordinate system, its
     ``target`` (machine mm; the new G92 offset for G92; the axis words in mm for G43.1), and
-    ``data``: a G10's new work offset (for system ``data_index``) or the position G28/G30 go to.
+    ``data``: a G10's new work offset (for system ``data_index``) or the position G28/G30 go to;
+    ``tool_length``: the tool length offsets a G43.1 or G49 leaves (None: the block has neither).
     """
 
     __slots__ = ("axis_command", "coord_system", "data", "data_index", "feed_rate", "modes",
-                 "spindle_speed", "target")
+                 "spindle_speed", "target", "tool_length")
 
     def __init__(self, modes: list[int], axis_command: int, coord_system: list[float]) -> None:
         self.modes = modes
@@ -95,6 +93,7 @@ class Plan:
         self.target: list[float] = []
         self.data: list[float] = []
         self.data_index = 0
+        self.tool_length: list[float] | None = None  # the offsets a G43.1 or G49 leaves
 
 
 def execute(plan: Plan, state: GrblState, rules: Rules) -> None:
@@ -102,10 +101,8 @@ def execute(plan: Plan, state: GrblState, rules: Rules) -> None:
     modes = plan.modes
     state.feed_rate = plan.feed_rate
     state.spindle_speed = plan.spindle_speed
-    if plan.axis_command == AXIS_TOOL_LENGTH:
-        length_axis = rules.axes.index(rules.tool_length_axis)
-        cancel = modes[TOOL_LENGTH] == LENGTH_CANCEL
-        state.tool_length_offset = 0.0 if cancel else plan.target[length_axis]
+    if plan.tool_length is not None:
+        state.tool_length_offset = plan.tool_length
     state.coord_system = plan.coord_system
     state.modes = modes[:NON_MODAL]
     state.modes[PROGRAM_FLOW] = RUNNING
