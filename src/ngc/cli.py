@@ -103,9 +103,6 @@ def dispatch(args: list[str]) -> int:
     if options.command is None:
         parser.print_help(sys.stderr)
         return EXIT_USAGE
-    if options.command == "check" and options.dialect in dialects.GRBL_ROWS:
-        # one command checks every row of ngc.grbl.DIALECTS: the row is kept apart
-        options.grbl_row, options.dialect = options.dialect, dialects.GRBL
     # (each command's module is loaded when it runs: ``ngc rs274`` starts without the others)
     module = importlib.import_module(f".commands.{RUNNERS[options.command]}", __package__)
     command: Callable[[argparse.Namespace], int] = module.run

@@ -43,7 +43,7 @@ def run(options: argparse.Namespace) -> int:
     if given:
         what = "is a machine input" if len(given) == 1 else "are machine inputs"
         sys.stderr.write(f"ngc check: {', '.join(given)} {what} of the other dialects: "
-                         f"--dialect {_row(options)} checks each line as the controller does, "
+                         f"--dialect {options.dialect} checks each line as the controller does, "
                          "with no machine\n")
         return EXIT_USAGE
     return each_file(options, _check_file, "")
@@ -53,7 +53,7 @@ def _check_file(options: argparse.Namespace, path: str) -> int:
     """One file: its rejected lines on stderr as found, its summary on stdout; its exit code."""
     name = display_name(path)
     json_lines = options.format == "json"
-    row = _row(options)
+    row = options.dialect
     checker = Checker(DIALECTS[row])
     kept: list[GrblError] = []
     try:
@@ -73,12 +73,6 @@ def _check_file(options: argparse.Namespace, path: str) -> int:
     sys.stdout.write((dumps(_record(name, checker, kept, row)) if json_lines
                       else _summary(name, checker)) + "\n")
     return EXIT_PROGRAM_ERROR if checker.rejected or checker.unchecked_lines else EXIT_OK
-
-
-def _row(options: argparse.Namespace) -> str:
-    """The row of :data:`ngc.grbl.DIALECTS` asked for (the CLI keeps it apart from
-    ``--dialect``, which names the command's mode)."""
-    return str(getattr(options, "grbl_row", None) or options.dialect)
 
 
 def _errors(name: str, handle: io.BufferedReader, checker: Checker) -> Iterator[GrblError]:

@@ -41,10 +41,10 @@ def run(options: argparse.Namespace) -> int:
     machine inputs of each dialect apply to its files (with ``--dialect``, those of the other
     dialect are a usage error).  ``-j N`` checks N files at once, the output in the files'
     order as with one.  Exit 2 if a file or a machine input cannot be read, else 1 if a program
-    has an error, else 0.  ``--dialect grbl`` holds each line against Grbl 1.1 instead
-    (:mod:`ngc.commands.check_grbl`).
+    has an error, else 0.  ``--dialect grbl`` (or ``grblhal``) holds each line against that
+    controller's parser instead (:mod:`ngc.commands.check_grbl`).
     """
-    if options.dialect == dialects.GRBL:
+    if options.dialect in dialects.GRBL_ROWS:
         from . import check_grbl  # loaded on use, as the other reports
 
         return check_grbl.run(options)
