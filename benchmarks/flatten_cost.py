@@ -51,6 +51,9 @@ def main() -> int:
     parser.add_argument("--target", default="linuxcnc")
     options = parser.parse_args()
     python = sys.executable
+    # (the package's modules compiled first, as an installed package has them: a module whose
+    # cached bytecode is stale is compiled again at each start)
+    subprocess.run([python, "-m", "compileall", "-q", str(SRC)], check=True)
     print(f"python: {python} {sys.version.split()[0]}; {os.cpu_count()} cores; "
           f"target {options.target}")
     print(f"{'program':<18} {'canon s':>9} {'flatten s':>10} {'ratio':>6} {'flatten MiB':>12}")
