@@ -367,7 +367,7 @@ def test_rs274_engine_bytes_written_back(work: Path) -> None:
 
 # -- errors ----------------------------------------------------------------------------------------
 @pytest.mark.parametrize(("command", "choices"), [("canon", "'linuxcnc', 'engine'"),
-                                                 ("check", "'linuxcnc', 'engine', 'grbl'")])
+                                                 ("check", "'linuxcnc', 'engine', 'grbl', 'grblhal'")])
 def test_bad_dialect_choice(capsys: pytest.CaptureFixture[str], work: Path, command: str,
                             choices: str) -> None:
     code, out, err = run(capsys, command, "--dialect", "fanuc", "l.ngc")
@@ -439,7 +439,7 @@ def test_check_setup_read_before_any_file(capsys: pytest.CaptureFixture[str],
 
 
 def test_help_names_the_options(capsys: pytest.CaptureFixture[str]) -> None:
-    for command, choices in (("canon", "{linuxcnc,engine}"), ("check", "{linuxcnc,engine,grbl}")):
+    for command, choices in (("canon", "{linuxcnc,engine}"), ("check", "{linuxcnc,engine,grbl,grblhal}")):
         code, out, _ = run(capsys, command, "--help")
         assert code == 0 and f"--dialect {choices}" in out and "--setup FILE" in out
     code, out, _ = run(capsys, "rs274", "--help")
