@@ -217,44 +217,35 @@ def compare(a: list[Move], b: list[Move], tolerance: float, start: int = 0) -> V
     size = len(b)
     for i, m in enumerate(a):
         count = m[8]
-        if count == 1 and j < size:  # (most moves: one written for one, of the same kind)
-            n = b[j]
-            if n[0] == m[0] and n[3] == m[3] and m[2] is None:
-                f, g = m[7], n[7]
-                if abs(f - g) > FEED_TOLERANCE * max(1.0, abs(f)):
-                    return Verified(i, worst, f"{_where(start, i, m)}: the feed {f:.6g} became "
-                                    f"{g:.6g}")
-                p, q = m[1], n[1]
-                worst = max(worst, math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]),
-                            abs(p[3] - q[3]), abs(p[4] - q[4]), abs(p[5] - q[5]))
-                j += 1
+        n = b[j] if count == 1 and j < size else None
+        if n is None or n[0] != m[0] or n[3] != m[3]:  # (most moves: one for one, the same kind)
+            group = b[j:j + count]
+            if len(group) < count or count == 0:
+                return Verified(i, worst, f"{_where(start, i, m)}: the program written has no "
+                                "move for it")
+            n = group[0]
+            if count == 1 and n[0] == m[0] and n[3] == m[3]:
+                pass
+            elif (m[0] == ARC and count == m[3] and all(
+                    r[0] == ARC and r[3] == 1 and r[5] == n[5] and _axis_gap(r, n) < 1e-6
+                    for r in group)):
+                n = (ARC, group[-1][1], n[2], count, n[4], n[5], None, n[7], 1)
+            elif m[0] in (CURVE, ARC) and all(r[0] == FEED for r in group):
+                shape = m[6]
+                if isinstance(shape, tuple):  # (an arc: its start, end, centre, normal, turns)
+                    shape = [shape[0], *curves.arc_points(ArcShape(*shape), tolerance * FINE)]
+                assert shape is not None
+                deviation, difference = _follow(shape, m[7], group, tolerance)
+                worst = max(worst, deviation)
+                if difference is not None:
+                    return Verified(i, worst, f"{_where(start, i, m)}: {difference}")
+                j += count
                 continue
-        group = b[j:j + count]
-        if len(group) < count or count == 0:
-            return Verified(i, worst, f"{_where(start, i, m)}: the program written has no move "
-                            "for it")
-        n = group[0]
-        if count == 1 and n[0] == m[0] and n[3] == m[3]:
-            pass
-        elif (m[0] == ARC and count == m[3] and all(r[0] == ARC and r[3] == 1 and r[5] == n[5]
-                                                     and _axis_gap(r, n) < 1e-6 for r in group)):
-            n = (ARC, group[-1][1], n[2], count, n[4], n[5], None, n[7], 1)
-        elif m[0] in (CURVE, ARC) and all(r[0] == FEED for r in group):
-            shape = m[6]
-            if isinstance(shape, tuple):  # (an arc: its start, end, centre, normal, turns)
-                shape = [shape[0], *curves.arc_points(ArcShape(*shape), tolerance * FINE)]
-            assert shape is not None
-            deviation, difference = _follow(shape, m[7], group, tolerance)
-            worst = max(worst, deviation)
-            if difference is not None:
-                return Verified(i, worst, f"{_where(start, i, m)}: {difference}")
-            j += count
-            continue
-        else:
-            return Verified(i, worst, f"{_where(start, i, m)}: a {m[0]} became a {n[0]}")
-        if not _same_feed(m[7], n[7]):
-            return Verified(i, worst, f"{_where(start, i, m)}: the feed {m[7]:.6g} became "
-                            f"{n[7]:.6g}")
+            else:
+                return Verified(i, worst, f"{_where(start, i, m)}: a {m[0]} became a {n[0]}")
+        f, g = m[7], n[7]
+        if abs(f - g) > FEED_TOLERANCE * max(1.0, abs(f)):
+            return Verified(i, worst, f"{_where(start, i, m)}: the feed {f:.6g} became {g:.6g}")
         p, q = m[1], n[1]
         worst = max(worst, math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]),
                     abs(p[3] - q[3]), abs(p[4] - q[4]), abs(p[5] - q[5]))

@@ -139,6 +139,12 @@ class Toolpath:
         else:
             self.emit(kind(*fields), label, line)
             return
+        if self.frame.identity:  # (``_line``'s common case, kept quick)
+            end: Pos = tuple(fields)
+            self.prog_end = end
+            self._straight(move, self.pos, end, line)
+            self.pos = self.prog = end
+            return
         self._line(move, fields, line)
 
     def print_text(self, text: str) -> None:
