@@ -150,6 +150,21 @@ def test_compare_takes_rounding_and_leaves_out_moves_of_no_length() -> None:
     assert off.difference is not None and "off by 0.000200 on X" in off.difference
 
 
+def test_a_sliver_written_as_one_line_is_followed() -> None:
+    # an arc whose printed start and end are a rounding apart, written as one line whose end
+    # is nearer the printed start: the line ends the curve; the next line is not part of it
+    start, end = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0), (-0.0012, 0.0, 0.0, 0.0, 0.0, 0.0)
+    lines = [("feed", (-0.0001, 0.0, 0.0, 0.0, 0.0, 0.0)), ("feed", (-20.0, 5.0, 0.0) + (0.0,) * 3)]
+    after, worst, difference = flatten_sweep._follow([start, end], lines, 0, 0.002, 1e-3)
+    assert (after, difference) == (1, None) and worst < 0.002
+    # a whole circle is not ended by a line that comes back near its start early
+    circle = [(math.cos(t / 8 * math.tau), math.sin(t / 8 * math.tau), 0.0, 0.0, 0.0, 0.0)
+              for t in range(9)]
+    near_start = [("feed", (0.9999, 0.01, 0.0, 0.0, 0.0, 0.0))]
+    after, _, difference = flatten_sweep._follow(circle, near_start, 0, 0.002, 1e-3)
+    assert difference is not None
+
+
 @pytest.mark.skipif(shutil.which("rs274") is None, reason="rs274 is not installed")
 def test_a_generated_program_flattens_to_the_same_path_in_rs274() -> None:
     cfg = flatten_sweep.Config("rs274", "linuxcnc", inch=False)

@@ -581,6 +581,9 @@ def _follow(points: list[Any], b: list[Any], j: int, tolerance: float,
             d = math.dist(points[i][:3], q[:3])
             if d <= best:  # (of points as near, the later: a sliver's end is its start)
                 k, best = i, d
+        if k != last and along[last] <= reach and math.dist(points[last][:3], q[:3]) <= tolerance:
+            k = last  # (the curve's end within the line's reach and the tolerance: the line
+            # ends it, as a sliver's one line does, its printed start and end a rounding apart)
         gap = min(_to_segment(q, points[max(k - 1, 0)], points[k]),
                   _to_segment(q, points[k], points[min(k + 1, last)]))
         for p in points[at + 1:k]:
