@@ -157,6 +157,10 @@ def test_a_sliver_written_as_one_line_is_followed() -> None:
     lines = [("feed", (-0.0001, 0.0, 0.0, 0.0, 0.0, 0.0)), ("feed", (-20.0, 5.0, 0.0) + (0.0,) * 3)]
     after, worst, difference = flatten_sweep._follow([start, end], lines, 0, 0.002, 1e-3)
     assert (after, difference) == (1, None) and worst < 0.002
+    # two lines there: the later ends it
+    two = [("feed", (-0.0005, 0.0, 0.0, 0.0, 0.0, 0.0)), *lines]
+    after, worst, difference = flatten_sweep._follow([start, end], two, 0, 0.002, 1e-3)
+    assert (after, difference) == (2, None)
     # a whole circle is not ended by a line that comes back near its start early
     circle = [(math.cos(t / 8 * math.tau), math.sin(t / 8 * math.tau), 0.0, 0.0, 0.0, 0.0)
               for t in range(9)]

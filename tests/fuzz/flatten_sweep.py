@@ -581,9 +581,10 @@ def _follow(points: list[Any], b: list[Any], j: int, tolerance: float,
             d = math.dist(points[i][:3], q[:3])
             if d <= best:  # (of points as near, the later: a sliver's end is its start)
                 k, best = i, d
-        if k != last and along[last] <= reach and math.dist(points[last][:3], q[:3]) <= tolerance:
-            k = last  # (the curve's end within the line's reach and the tolerance: the line
-            # ends it, as a sliver's one line does, its printed start and end a rounding apart)
+        if k != last and along[last] <= tolerance and _ends_near(points[last], b, j, tolerance):
+            k = last  # (a curve within the tolerance of its start, a sliver whose printed start
+            # and end are a rounding apart: the last of the lines that end within the tolerance
+            # of its end ends it)
         gap = min(_to_segment(q, points[max(k - 1, 0)], points[k]),
                   _to_segment(q, points[k], points[min(k + 1, last)]))
         for p in points[at + 1:k]:
@@ -598,6 +599,15 @@ def _follow(points: list[Any], b: list[Any], j: int, tolerance: float,
         if k == last:
             return j, worst, None
         previous, at = q, k
+
+
+def _ends_near(end: Any, b: list[Any], j: int, tolerance: float) -> bool:
+    """The straight feed ``b[j]`` ends within ``tolerance`` of ``end`` and the move after it
+    does not (it is the last of the lines there)."""
+    if math.dist(end[:3], b[j][1][:3]) > tolerance:
+        return False
+    after = b[j + 1] if j + 1 < len(b) else None
+    return after is None or after[0] != FEED or math.dist(end[:3], after[1][:3]) > tolerance
 
 
 def _to_segment(p: Any, a: Any, b: Any) -> float:
