@@ -224,9 +224,7 @@ def compare(a: list[Move], b: list[Move], tolerance: float, start: int = 0) -> V
                 return Verified(i, worst, f"{_where(start, i, m)}: the program written has no "
                                 "move for it")
             n = group[0]
-            if count == 1 and n[0] == m[0] and n[3] == m[3]:
-                pass
-            elif (m[0] == ARC and count == m[3] and all(
+            if (m[0] == ARC and count == m[3] and all(
                     r[0] == ARC and r[3] == 1 and r[5] == n[5] and _axis_gap(r, n) < 1e-6
                     for r in group)):
                 n = (ARC, group[-1][1], n[2], count, n[4], n[5], None, n[7], 1)
@@ -243,9 +241,9 @@ def compare(a: list[Move], b: list[Move], tolerance: float, start: int = 0) -> V
                 continue
             else:
                 return Verified(i, worst, f"{_where(start, i, m)}: a {m[0]} became a {n[0]}")
-        f, g = m[7], n[7]
-        if abs(f - g) > FEED_TOLERANCE * max(1.0, abs(f)):
-            return Verified(i, worst, f"{_where(start, i, m)}: the feed {f:.6g} became {g:.6g}")
+        if not _same_feed(m[7], n[7]):
+            return Verified(i, worst, f"{_where(start, i, m)}: the feed {m[7]:.6g} became "
+                            f"{n[7]:.6g}")
         p, q = m[1], n[1]
         worst = max(worst, math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]),
                     abs(p[3] - q[3]), abs(p[4] - q[4]), abs(p[5] - q[5]))

@@ -30,6 +30,7 @@ from .targets import Target
 MM_PER_INCH = 25.4
 SYSTEMS = ("G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3")
 AXES = "XYZABC"
+_LINEAR_WORDS = ((0, " X"), (1, " Y"), (2, " Z"))
 LINEAR = (True, True, True, False, False, False)
 # An arc's plane by its normal, and the offset words of each plane with their axes.
 _PLANES = {(0.0, 0.0, 1.0): "G17", (0.0, 1.0, 0.0): "G18", (1.0, 0.0, 0.0): "G19"}
@@ -220,31 +221,16 @@ class Flattener:
         away from 0, so that a program for three axes has no rotary word), each after a space."""
         words = ""
         raw, where = self.raw, self.where  # (where[i] is raw[i] written)
-        x, y, z = q[0], q[1], q[2]
-        if x != raw[0]:  # (the same coordinate as the move before: the same word)
-            raw[0] = x
-            text = self._number(x)
-            if text != where[0] or force:
-                words = " X" + text
-                where[0] = text
-        elif force:
-            words = f" X{where[0]}"
-        if y != raw[1]:
-            raw[1] = y
-            text = self._number(y)
-            if text != where[1] or force:
-                words += " Y" + text
-                where[1] = text
-        elif force:
-            words += f" Y{where[1]}"
-        if z != raw[2]:
-            raw[2] = z
-            text = self._number(z)
-            if text != where[2] or force:
-                words += " Z" + text
-                where[2] = text
-        elif force:
-            words += f" Z{where[2]}"
+        for i, word in _LINEAR_WORDS:
+            v = q[i]
+            if v != raw[i]:  # (the same coordinate as the move before: the same word)
+                raw[i] = v
+                text = self._number(v)
+                if text != where[i] or force:
+                    words += word + text
+                    where[i] = text
+            elif force:
+                words += f"{word}{where[i]}"
         if q[3] != raw[3] or q[4] != raw[4] or q[5] != raw[5]:
             words += self._rotary(q)
         return words
@@ -317,12 +303,8 @@ class Flattener:
             self.counts = _ONE
             return
         q = self._coordinates(end, line)
-        text = code + (self._axes(q) or self._axes(q, force=True))  # (a move of no length
-        if len(text) > self.short or self.source_lines:  # still goes in)
-            self._write_long(text, line)
-        else:  # (as ``write``: the common case, kept quick)
-            self.put(text + "\n")
-            self.lines += 1
+        axes = self._axes(q) or self._axes(q, force=True)  # (a move of no length still goes in)
+        self.write(code + axes, line)
         self.motions += 1
         self.counts = _ONE
 
